@@ -1,0 +1,79 @@
+//! `f64` and `f32`. Square roots come from `libm`, which is correctly rounded, so the host and
+//! the firmware (software or hardware float) compute bit-identical results.
+
+use super::Number;
+
+macro_rules! float_number {
+    ($type:ty, $name:literal, $sqrt:path, $floor:path) => {
+        impl Number for $type {
+            const NAME: &'static str = $name;
+            const ZERO: Self = 0.0;
+            const ONE: Self = 1.0;
+            const MAX: Self = <$type>::MAX;
+
+            fn from_f64(value: f64) -> Self {
+                if value.is_nan() {
+                    0.0
+                } else {
+                    (value as $type).clamp(<$type>::MIN, <$type>::MAX)
+                }
+            }
+
+            fn to_f64(self) -> f64 {
+                self as f64
+            }
+
+            fn from_i32(value: i32) -> Self {
+                value as $type
+            }
+
+            fn sqrt(self) -> Self {
+                if self > 0.0 {
+                    $sqrt(self)
+                } else {
+                    0.0
+                }
+            }
+
+            fn checked_div(self, divisor: Self) -> Option<Self> {
+                if divisor == 0.0 {
+                    None
+                } else {
+                    Some((self / divisor).clamp(<$type>::MIN, <$type>::MAX))
+                }
+            }
+
+            fn floor_to_i32(self) -> i32 {
+                // `as` saturates and maps NaN to 0.
+                $floor(self) as i32
+            }
+        }
+    };
+}
+
+float_number!(f64, "f64", libm::sqrt, libm::floor);
+float_number!(f32, "f32", libm::sqrtf, libm::floorf);
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn powi_matches_repeated_multiplication() {
+        assert_eq!(Number::powi(0.5f64, 3), 0.125);
+        assert_eq!(Number::powi(2.0f64, 0), 1.0);
+        assert_eq!(Number::powi(0.9f64, 100_000), 0.0);
+    }
+
+    #[test]
+    fn zero_divisor_is_none_and_overflow_saturates() {
+        assert_eq!(1.0f32.checked_div(0.0), None);
+        assert_eq!(1e30f32.checked_div(1e-30), Some(f32::MAX));
+    }
+
+    #[test]
+    fn sqrt_of_negative_is_zero() {
+        assert_eq!(Number::sqrt(-4.0f64), 0.0);
+        assert_eq!(Number::sqrt(4.0f32), 2.0);
+    }
+}

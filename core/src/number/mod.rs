@@ -1,0 +1,99 @@
+//! The number type the tracer computes in.
+//!
+//! Everything from ray generation to shading is generic over [`Number`], so the same code runs
+//! in `f64` (the reference), `f32`, or fixed point on a microcontroller without an FPU. The
+//! trait avoids anything a fixed-point type cannot do: there are no infinities or NaNs, a
+//! division states what happens when the divisor is zero, and powers are integer powers.
+//! Scene set-up (matrix composition, inversion, trigonometry) is done once in `f64` and
+//! converted with [`Number::from_f64`]; only per-pixel work runs in the number type.
+
+mod float;
+
+use core::fmt::Debug;
+use core::ops::{Add, Mul, Neg, Sub};
+
+/// A real-number type for the tracer's per-pixel arithmetic.
+pub trait Number:
+    Copy
+    + PartialOrd
+    + PartialEq
+    + Debug
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Neg<Output = Self>
+{
+    /// A short name for reports and the command line (`f64`, `f32`, ...).
+    const NAME: &'static str;
+    const ZERO: Self;
+    const ONE: Self;
+    /// The largest finite value: "no hit yet" and "unbounded shadow ray".
+    const MAX: Self;
+
+    /// Converts, saturating to the representable range. Used at scene set-up only.
+    fn from_f64(value: f64) -> Self;
+    fn to_f64(self) -> f64;
+    fn from_i32(value: i32) -> Self;
+
+    /// The square root; zero for zero and negative inputs.
+    fn sqrt(self) -> Self;
+
+    /// `self / divisor`, or `None` when the divisor is zero. Quotients too large for the type
+    /// saturate.
+    fn checked_div(self, divisor: Self) -> Option<Self>;
+
+    /// The largest integer not above `self`, saturating to the `i32` range.
+    fn floor_to_i32(self) -> i32;
+
+    fn abs(self) -> Self {
+        if self < Self::ZERO {
+            -self
+        } else {
+            self
+        }
+    }
+
+    fn min(self, other: Self) -> Self {
+        if other < self {
+            other
+        } else {
+            self
+        }
+    }
+
+    fn max(self, other: Self) -> Self {
+        if other > self {
+            other
+        } else {
+            self
+        }
+    }
+
+    /// `self` raised to an integer power by repeated squaring (the specular term: §4.2.4 uses
+    /// `pow`, which a fixed-point type cannot provide in general).
+    fn powi(self, exponent: u32) -> Self {
+        let mut result = Self::ONE;
+        let mut base = self;
+        let mut remaining = exponent;
+        while remaining > 0 {
+            if remaining & 1 == 1 {
+                result = result * base;
+            }
+            remaining >>= 1;
+            if remaining > 0 {
+                base = base * base;
+            }
+        }
+        result
+    }
+
+    /// `a·b` of two 3-vectors. A type with a wider accumulator overrides this.
+    fn dot3(a: [Self; 3], b: [Self; 3]) -> Self {
+        a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+    }
+
+    /// `|v|` of a 3-vector. A type with a narrow range overrides this to scale first.
+    fn length3(v: [Self; 3]) -> Self {
+        Self::dot3(v, v).sqrt()
+    }
+}

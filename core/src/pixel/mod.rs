@@ -1,0 +1,84 @@
+//! Where the renderer's pixels go, and where the Pixelbuffer optimization reads them back.
+//!
+//! Coordinates here are *image* coordinates: `x` from the left, `y` = row from the **top**
+//! (row 0 is the viewport's top row, screen y = vy2). The renderer produces rows top first, as
+//! the thesis's `pgatrace` did (§3.4 of the digest).
+//!
+//! In the style of embedded-graphics: one required method per trait, and defaulted row
+//! methods that an implementation can replace with a faster path.
+
+mod frame_buffer;
+mod mock;
+#[cfg(feature = "embedded-graphics")]
+mod draw_target;
+
+pub use frame_buffer::FrameBuffer;
+pub use mock::MockSink;
+#[cfg(feature = "embedded-graphics")]
+pub use draw_target::{DrawTargetSink, GreyDrawTargetSink};
+
+/// An RGB-mode pixel: 8 bits per channel.
+pub type Rgb888 = [u8; 3];
+
+/// Something that accepts pixels of type `P`: palette indices (`u8`) in PGA mode, [`Rgb888`]
+/// in RGB mode.
+pub trait PixelSink<P: Copy> {
+    /// Stores one pixel. Coordinates outside the sink are ignored.
+    fn set_pixel(&mut self, x: u16, y: u16, value: P);
+
+    /// Stores a run of pixels of row `y` starting at column `x`.
+    fn write_row(&mut self, x: u16, y: u16, values: &[P]) {
+        for (offset, value) in values.iter().enumerate() {
+            self.set_pixel(x.saturating_add(offset as u16), y, *value);
+        }
+    }
+
+    /// Fills `width` pixels of row `y` from column `x` with one value.
+    fn fill_row(&mut self, x: u16, y: u16, width: u16, value: P) {
+        for offset in 0..width {
+            self.set_pixel(x.saturating_add(offset), y, value);
+        }
+    }
+
+    /// Called after each finished row; a display can flush here, a host can report progress.
+    fn row_done(&mut self, _y: u16) {}
+}
+
+/// Something the renderer can read pixels back from (the Pixelbuffer's `rline`, §4.7.2).
+pub trait PixelSource<P: Copy> {
+    /// The pixel at (x, y), or `None` outside the source.
+    fn get_pixel(&self, x: u16, y: u16) -> Option<P>;
+
+    /// Reads row `y` from column `x` into `values`; pixels outside the source are left alone.
+    fn read_row(&self, x: u16, y: u16, values: &mut [P]) {
+        for (offset, value) in values.iter_mut().enumerate() {
+            if let Some(pixel) = self.get_pixel(x.saturating_add(offset as u16), y) {
+                *value = pixel;
+            }
+        }
+    }
+}
+
+impl<P: Copy, S: PixelSink<P> + ?Sized> PixelSink<P> for &mut S {
+    fn set_pixel(&mut self, x: u16, y: u16, value: P) {
+        (**self).set_pixel(x, y, value)
+    }
+    fn write_row(&mut self, x: u16, y: u16, values: &[P]) {
+        (**self).write_row(x, y, values)
+    }
+    fn fill_row(&mut self, x: u16, y: u16, width: u16, value: P) {
+        (**self).fill_row(x, y, width, value)
+    }
+    fn row_done(&mut self, y: u16) {
+        (**self).row_done(y)
+    }
+}
+
+impl<P: Copy, S: PixelSource<P> + ?Sized> PixelSource<P> for &mut S {
+    fn get_pixel(&self, x: u16, y: u16) -> Option<P> {
+        (**self).get_pixel(x, y)
+    }
+    fn read_row(&self, x: u16, y: u16, values: &mut [P]) {
+        (**self).read_row(x, y, values)
+    }
+}

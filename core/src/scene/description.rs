@@ -1,0 +1,187 @@
+//! The scene as written: every global setting of the thesis's user interface (§2.1 of the
+//! digest) and the list of objects, with the defaults of `../shared/scene-format.md`.
+//! Capacities are in the type: `MAX_OBJECTS` is how many objects the build can hold.
+
+use heapless::Vec;
+
+use crate::geometry::Matrix4;
+use crate::shading::Palette;
+
+/// The four unit primitives of §4.2.5 (fig 4.6), in the thesis's enum order.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Primitive {
+    /// The unit cube `[0,1]^3`.
+    Cube,
+    /// The unit sphere at the origin.
+    Sphere,
+    /// Radius 1 about +z, from z = 0 to z = 1, both caps.
+    Cylinder,
+    /// Apex at the origin, base of radius 1 at z = 1, capped.
+    Cone,
+}
+
+impl Primitive {
+    pub const ALL: [Primitive; 4] = [Primitive::Cube, Primitive::Sphere, Primitive::Cylinder, Primitive::Cone];
+
+    /// The keyword (the thesis's `nameof` table).
+    pub const fn name(self) -> &'static str {
+        match self {
+            Primitive::Cube => "cube",
+            Primitive::Sphere => "sphere",
+            Primitive::Cylinder => "cylinder",
+            Primitive::Cone => "cone",
+        }
+    }
+}
+
+/// The screen rectangle in pixels, inclusive (`setviewport`). y grows upward, as on the PGA.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Viewport {
+    pub x1: u16,
+    pub x2: u16,
+    pub y1: u16,
+    pub y2: u16,
+}
+
+impl Viewport {
+    pub const fn width(&self) -> u16 {
+        self.x2 - self.x1 + 1
+    }
+    pub const fn height(&self) -> u16 {
+        self.y2 - self.y1 + 1
+    }
+    pub const fn pixel_count(&self) -> u32 {
+        self.width() as u32 * self.height() as u32
+    }
+}
+
+/// The rectangle on the view plane that the viewport maps onto (`setwindow`); `x1 < x2`,
+/// `y1 < y2`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Window {
+    pub x1: f64,
+    pub x2: f64,
+    pub y1: f64,
+    pub y2: f64,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Projection {
+    /// Rays start on the view plane and travel along `direction` (never zero).
+    Parallel { direction: [f64; 3] },
+    /// Rays start at `eye` and pass through the view plane.
+    Perspective { eye: [f64; 3] },
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Light {
+    /// A point light at this position.
+    Point([f64; 3]),
+    /// A directional light; the vector points toward the light (never zero).
+    Direction([f64; 3]),
+}
+
+/// Which of the four optimizations of §4.7 are on.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Optimizations {
+    pub pixelbuffer: bool,
+    pub extents: bool,
+    pub grid: bool,
+    pub sortlist: bool,
+}
+
+impl Optimizations {
+    pub const ALL: Self = Self { pixelbuffer: true, extents: true, grid: true, sortlist: true };
+    pub const NONE: Self = Self { pixelbuffer: false, extents: false, grid: false, sortlist: false };
+
+    /// All 16 combinations, `NONE` first.
+    pub fn combinations() -> impl Iterator<Item = Self> {
+        (0u8..16).map(|bits| Self {
+            pixelbuffer: bits & 1 != 0,
+            extents: bits & 2 != 0,
+            grid: bits & 4 != 0,
+            sortlist: bits & 8 != 0,
+        })
+    }
+}
+
+/// Surface constants of one object (table 4.1), defaults from `getobject`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Material {
+    /// Colour group 0..15 (`clr`).
+    pub colour: u8,
+    pub ka: f64,
+    pub kd: f64,
+    pub ks: f64,
+    /// Specular exponent.
+    pub pwr: f64,
+    /// Roughness: noise of up to `rnd` shade steps.
+    pub rnd: f64,
+    /// Cyan, magenta, yellow reflection ratios (RGB mode).
+    pub cmy: [f64; 3],
+}
+
+impl Default for Material {
+    fn default() -> Self {
+        Self { colour: 0, ka: 1.0, kd: 0.4, ks: 0.6, pwr: 20.0, rnd: 0.8, cmy: [0.3; 3] }
+    }
+}
+
+/// One object: a primitive instanced by a transform.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ObjectDescription {
+    pub primitive: Primitive,
+    /// Local -> world, composed from the object's statements in order.
+    pub world_from_object: Matrix4,
+    pub material: Material,
+    /// The line of the `.mts` file where the object starts (0 when not from a file), so that
+    /// later checks can name it.
+    pub line: u32,
+}
+
+impl ObjectDescription {
+    pub fn new(primitive: Primitive, line: u32) -> Self {
+        Self { primitive, world_from_object: Matrix4::IDENTITY, material: Material::default(), line }
+    }
+}
+
+/// A whole scene as written, before any number type is chosen.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SceneDescription<const MAX_OBJECTS: usize> {
+    pub viewport: Viewport,
+    pub window: Window,
+    /// The view plane is z = `view_plane`.
+    pub view_plane: f64,
+    pub projection: Projection,
+    pub light: Light,
+    /// Ambient intensity Ia.
+    pub ambient: f64,
+    /// Background palette index.
+    pub background: u8,
+    pub shadows: bool,
+    pub dither: bool,
+    pub optimizations: Optimizations,
+    /// The 256-entry look-up table built from the `group` statements.
+    pub palette: Palette,
+    pub objects: Vec<ObjectDescription, MAX_OBJECTS>,
+}
+
+impl<const MAX_OBJECTS: usize> Default for SceneDescription<MAX_OBJECTS> {
+    /// The defaults of the scene format (the thesis's compiled defaults, with `optimize all`).
+    fn default() -> Self {
+        Self {
+            viewport: Viewport { x1: 0, x2: 639, y1: 0, y2: 479 },
+            window: Window { x1: -100.0, x2: 100.0, y1: -100.0, y2: 100.0 },
+            view_plane: 500.0,
+            projection: Projection::Parallel { direction: [0.0, 0.0, -1.0] },
+            light: Light::Direction([1.0, 1.0, 1.0]),
+            ambient: 0.2,
+            background: 113,
+            shadows: false,
+            dither: false,
+            optimizations: Optimizations::ALL,
+            palette: Palette::grey(),
+            objects: Vec::new(),
+        }
+    }
+}

@@ -1,0 +1,8 @@
+//! Scenes: the description a `.mts` file parses into ([`SceneDescription`], plain `f64`, no
+//! number type yet) and the render-ready [`Scene`] prepared from it in a chosen number type.
+
+mod description;
+mod prepared;
+
+pub use description::*;
+pub use prepared::*;

@@ -1,0 +1,123 @@
+//! The PGA look-up table: 256 entries of 4-bit red, green and blue, organised as 16 colour
+//! groups of 16 shades; index = 16·group + shade (§4.2.4, figs 4.4–4.5; PGADPEND.C).
+
+/// One look-up-table entry: 4 bits per primary (0..=15).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct Rgb4 {
+    pub r: u8,
+    pub g: u8,
+    pub b: u8,
+}
+
+impl Rgb4 {
+    pub const fn new(r: u8, g: u8, b: u8) -> Self {
+        Self { r, g, b }
+    }
+
+    /// The 8-bit-per-channel colour (each 4-bit level times 17, so 15 gives 255).
+    pub const fn to_rgb888(self) -> [u8; 3] {
+        [self.r * 17, self.g * 17, self.b * 17]
+    }
+
+    /// The LUT-file word: bits 11..8 red, 7..4 green, 3..0 blue (§4.2.2, `savecolors`).
+    pub const fn to_word(self) -> u16 {
+        ((self.r as u16) << 8) | ((self.g as u16) << 4) | self.b as u16
+    }
+
+    /// Decodes a LUT-file word; bits 15..12 are ignored (`readcolors`).
+    pub const fn from_word(word: u16) -> Self {
+        Self::new(((word >> 8) & 0xF) as u8, ((word >> 4) & 0xF) as u8, (word & 0xF) as u8)
+    }
+
+    /// Grey level 0..=15 by integer Rec. 601 luma (299/587/114), rounded: how a 16-grey display
+    /// shows this colour.
+    pub const fn luminance(self) -> u8 {
+        ((299 * self.r as u32 + 587 * self.g as u32 + 114 * self.b as u32 + 500) / 1000) as u8
+    }
+}
+
+/// The 256-entry look-up table.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Palette {
+    pub entries: [Rgb4; 256],
+}
+
+impl Default for Palette {
+    fn default() -> Self {
+        Self::grey()
+    }
+}
+
+impl Palette {
+    /// Every group a grey ramp, shade i = (i, i, i): the scene format's default.
+    pub fn grey() -> Self {
+        Self { entries: core::array::from_fn(|index| { let i = (index % 16) as u8; Rgb4::new(i, i, i) }) }
+    }
+
+    pub fn entry(&self, index: u8) -> Rgb4 {
+        self.entries[index as usize]
+    }
+
+    /// `generatergbup(group, r, g, b)`: shade i = round(i·(r,g,b)/max(r,g,b)), walking from
+    /// black through the cell so that the largest channel reaches 15 at shade 15.
+    /// The thesis did nothing for (0,0,0); we make the group black.
+    pub fn set_group_up(&mut self, group: u8, cell: Rgb4) {
+        let largest = cell.r.max(cell.g).max(cell.b) as f64;
+        for shade in 0..16u8 {
+            let level = |channel: u8| {
+                if largest == 0.0 { 0 } else { (shade as f64 * (channel as f64 / largest) + 0.5) as u8 }
+            };
+            self.entries[(group as usize & 15) * 16 + shade as usize] = Rgb4::new(level(cell.r), level(cell.g), level(cell.b));
+        }
+    }
+
+    /// The `down` palette as the scene format defines it (the thesis's intent, digest §11 B8
+    /// reading (b)): shade 15 is white and the line from white passes through the cell,
+    /// shade i = 15 − round((15 − i)·d) with d = (15 − r, 15 − g, 15 − b) / max.
+    /// A white cell gives an all-white group.
+    pub fn set_group_down(&mut self, group: u8, cell: Rgb4) {
+        let complement = [15 - cell.r.min(15), 15 - cell.g.min(15), 15 - cell.b.min(15)];
+        let largest = complement.iter().copied().max().unwrap_or(0) as f64;
+        for shade in 0..16u8 {
+            let level = |channel: u8| {
+                if largest == 0.0 {
+                    15
+                } else {
+                    15 - ((15 - shade) as f64 * (channel as f64 / largest) + 0.5) as u8
+                }
+            };
+            self.entries[(group as usize & 15) * 16 + shade as usize] =
+                Rgb4::new(level(complement[0]), level(complement[1]), level(complement[2]));
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn up_group_walks_from_black_to_the_cell_scaled_to_15() {
+        let mut palette = Palette::grey();
+        palette.set_group_up(1, Rgb4::new(15, 1, 1));
+        assert_eq!(palette.entry(16), Rgb4::new(0, 0, 0));
+        assert_eq!(palette.entry(31), Rgb4::new(15, 1, 1));
+        assert_eq!(palette.entry(16 + 8), Rgb4::new(8, 1, 1)); // 8/15 rounds to 1
+    }
+
+    #[test]
+    fn down_group_is_white_at_15_and_passes_through_the_cell() {
+        let mut palette = Palette::grey();
+        palette.set_group_down(2, Rgb4::new(3, 9, 15));
+        assert_eq!(palette.entry(47), Rgb4::new(15, 15, 15));
+        // max complement is 12 (red), so shade 15 - 12 = 3 is the cell itself.
+        assert_eq!(palette.entry(32 + 3), Rgb4::new(3, 9, 15));
+    }
+
+    #[test]
+    fn lut_word_round_trips() {
+        let c = Rgb4::new(10, 4, 15);
+        assert_eq!(c.to_word(), 0x0A4F);
+        assert_eq!(Rgb4::from_word(0xFA4F), c);
+    }
+}
