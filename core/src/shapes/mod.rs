@@ -1,1 +1,90 @@
-//! TODO
+//! The four unit primitives of §4.2.5 (fig 4.6), each with `intersect` (nearest hit and its
+//! normal, for primary rays) and the cheaper `occluded` (any hit, for shadow rays), in the
+//! object's own space (§4.4–4.6, RAYINTER.C).
+//!
+//! Differences from the thesis's code (see docs/deviations.md):
+//! - both roots of each quadric are considered, so a ray that starts inside a primitive sees
+//!   its far side (digest §11 B21);
+//! - quadrics use the numerically stable forms: the discriminant from the perpendicular vector
+//!   (sphere, cylinder) and the near root as `c / q` (Ray Tracing Gems ch. 7);
+//! - the cone's side normal is the gradient (x, y, −z) (§11 B3);
+//! - a ray component that is exactly zero never divides (no infinities in fixed point);
+//! - a tangent ray (zero discriminant) counts as a hit.
+//!
+//! Each primitive's code is behind its own cargo feature, so a build links only what its
+//! scenes use; [`Primitive::is_compiled`] says which are in.
+
+mod bounds;
+#[cfg(feature = "cone")]
+mod cone;
+#[cfg(feature = "cube")]
+mod cube;
+#[cfg(feature = "cylinder")]
+mod cylinder;
+mod quadratic;
+#[cfg(feature = "sphere")]
+mod sphere;
+
+pub use bounds::Interval;
+
+use crate::geometry::{Ray, Vector3};
+use crate::number::Number;
+use crate::scene::Primitive;
+
+/// A hit in object space: the ray parameter and the outward normal there (not normalised).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Hit<N> {
+    pub t: N,
+    pub normal: Vector3<N>,
+}
+
+impl Primitive {
+    /// Whether this build contains the primitive's intersection code.
+    pub const fn is_compiled(self) -> bool {
+        match self {
+            Primitive::Cube => cfg!(feature = "cube"),
+            Primitive::Sphere => cfg!(feature = "sphere"),
+            Primitive::Cylinder => cfg!(feature = "cylinder"),
+            Primitive::Cone => cfg!(feature = "cone"),
+        }
+    }
+
+    /// The nearest hit with `t` inside `interval`, if any.
+    #[allow(unused_variables)]
+    pub fn intersect<N: Number>(self, ray: &Ray<N>, interval: Interval<N>) -> Option<Hit<N>> {
+        match self {
+            #[cfg(feature = "cube")]
+            Primitive::Cube => cube::intersect(ray, interval),
+            #[cfg(feature = "sphere")]
+            Primitive::Sphere => sphere::intersect(ray, interval),
+            #[cfg(feature = "cylinder")]
+            Primitive::Cylinder => cylinder::intersect(ray, interval),
+            #[cfg(feature = "cone")]
+            Primitive::Cone => cone::intersect(ray, interval),
+            // Scene preparation rejects primitives that are not compiled in.
+            #[allow(unreachable_patterns)]
+            _ => None,
+        }
+    }
+
+    /// Whether the ray hits the primitive anywhere inside `interval`. Cheaper than
+    /// [`Primitive::intersect`]: it stops at the first surface found and computes no normal.
+    #[allow(unused_variables)]
+    pub fn occluded<N: Number>(self, ray: &Ray<N>, interval: Interval<N>) -> bool {
+        match self {
+            #[cfg(feature = "cube")]
+            Primitive::Cube => cube::occluded(ray, interval),
+            #[cfg(feature = "sphere")]
+            Primitive::Sphere => sphere::occluded(ray, interval),
+            #[cfg(feature = "cylinder")]
+            Primitive::Cylinder => cylinder::occluded(ray, interval),
+            #[cfg(feature = "cone")]
+            Primitive::Cone => cone::occluded(ray, interval),
+            #[allow(unreachable_patterns)]
+            _ => false,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests;

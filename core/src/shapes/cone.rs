@@ -1,0 +1,72 @@
+//! The unit cone: apex at the origin, axis +z, base of radius 1 at z = 1, capped
+//! (`tracecone`). Side normal is the gradient of x² + y² − z², i.e. (x, y, −z); the thesis's
+//! (x, y, √(1 − z²)) was wrong (digest §11 B3).
+
+use super::{quadratic, Hit, Interval};
+use crate::geometry::{Ray, Vector3};
+use crate::number::Number;
+
+fn side_normal<N: Number>(hit: Vector3<N>) -> Vector3<N> {
+    // At the apex the gradient vanishes; the axis is the sensible outward direction there.
+    if hit.x == N::ZERO && hit.y == N::ZERO && hit.z == N::ZERO {
+        Vector3::new(N::ZERO, N::ZERO, -N::ONE)
+    } else {
+        Vector3::new(hit.x, hit.y, -hit.z)
+    }
+}
+
+fn surfaces<N: Number>(ray: &Ray<N>) -> [Option<(N, Vector3<N>)>; 3] {
+    let (p, d) = (ray.origin, ray.direction);
+    let mut found = [None; 3];
+    // Base: z = 1 inside the unit disc.
+    if d.z != N::ZERO {
+        if let Some(t) = (N::ONE - p.z).checked_div(d.z) {
+            let (x, y) = (p.x + d.x * t, p.y + d.y * t);
+            if x * x + y * y <= N::ONE {
+                found[0] = Some((t, Vector3::new(N::ZERO, N::ZERO, N::ONE)));
+            }
+        }
+    }
+    // Side: x² + y² − z² = 0 for 0 ≤ z ≤ 1.
+    let a = d.x * d.x + d.y * d.y - d.z * d.z;
+    let b = p.x * d.x + p.y * d.y - p.z * d.z;
+    let c = p.x * p.x + p.y * p.y - p.z * p.z;
+    let mut side = |slot: usize, t: N| {
+        let hit = ray.at(t);
+        if hit.z >= N::ZERO && hit.z <= N::ONE {
+            found[slot] = Some((t, side_normal(hit)));
+        }
+    };
+    if a == N::ZERO {
+        // Parallel to a generator line: the quadratic degenerates to 2 b t + c = 0.
+        if let Some(t) = (-c).checked_div(b + b) {
+            side(1, t);
+        }
+    } else {
+        let discriminant = b * b - a * c;
+        if discriminant >= N::ZERO {
+            let [first, second] = quadratic::roots(a, b, c, discriminant);
+            if let Some(t) = first {
+                side(1, t);
+            }
+            if let Some(t) = second {
+                side(2, t);
+            }
+        }
+    }
+    found
+}
+
+pub fn intersect<N: Number>(ray: &Ray<N>, interval: Interval<N>) -> Option<Hit<N>> {
+    let mut best: Option<Hit<N>> = None;
+    for (t, normal) in surfaces(ray).into_iter().flatten() {
+        if interval.contains(t) && best.map_or(true, |hit| t < hit.t) {
+            best = Some(Hit { t, normal });
+        }
+    }
+    best
+}
+
+pub fn occluded<N: Number>(ray: &Ray<N>, interval: Interval<N>) -> bool {
+    surfaces(ray).into_iter().flatten().any(|(t, _)| interval.contains(t))
+}

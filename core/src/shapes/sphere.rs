@@ -1,0 +1,32 @@
+//! The unit sphere at the origin (`tracesphere`, `stracesphere`).
+
+use super::{quadratic, Hit, Interval};
+use crate::geometry::Ray;
+use crate::number::Number;
+
+fn candidate_roots<N: Number>(ray: &Ray<N>) -> Option<[Option<N>; 2]> {
+    let p = ray.origin.to_array();
+    let d = ray.direction.to_array();
+    let a = N::dot3(d, d);
+    let b = N::dot3(p, d);
+    let discriminant = quadratic::unit_discriminant(p, d, a, b)?;
+    if discriminant < N::ZERO {
+        return None;
+    }
+    let c = N::dot3(p, p) - N::ONE;
+    Some(quadratic::roots(a, b, c, discriminant))
+}
+
+pub fn intersect<N: Number>(ray: &Ray<N>, interval: Interval<N>) -> Option<Hit<N>> {
+    let roots = candidate_roots(ray)?;
+    let t = roots.iter().flatten().copied().find(|t| interval.contains(*t))?;
+    Some(Hit { t, normal: ray.at(t) })
+}
+
+pub fn occluded<N: Number>(ray: &Ray<N>, interval: Interval<N>) -> bool {
+    match candidate_roots(ray) {
+        Some(roots) => roots.iter().flatten().any(|t| interval.contains(*t)),
+        None => false,
+    }
+}
+

@@ -1,0 +1,93 @@
+use super::*;
+use crate::geometry::{Ray, Vector3};
+
+fn ray(origin: [f64; 3], direction: [f64; 3]) -> Ray<f64> {
+    Ray { origin: Vector3::from_f64(origin), direction: Vector3::from_f64(direction) }
+}
+
+fn hit(primitive: Primitive, r: Ray<f64>) -> Option<(f64, [f64; 3])> {
+    primitive.intersect(&r, Interval::unbounded()).map(|h| (h.t, h.normal.to_f64()))
+}
+
+#[test]
+fn sphere_front_hit_and_hit_from_inside() {
+    assert_eq!(hit(Primitive::Sphere, ray([0.0, 0.0, 5.0], [0.0, 0.0, -1.0])), Some((4.0, [0.0, 0.0, 1.0])));
+    // From the centre the ray sees the far side (the thesis's single root missed it).
+    assert_eq!(hit(Primitive::Sphere, ray([0.0, 0.0, 0.0], [0.0, 0.0, -2.0])), Some((0.5, [0.0, 0.0, -1.0])));
+    assert_eq!(hit(Primitive::Sphere, ray([0.0, 2.0, 5.0], [0.0, 0.0, -1.0])), None);
+    // Behind the origin: no hit.
+    assert_eq!(hit(Primitive::Sphere, ray([0.0, 0.0, 5.0], [0.0, 0.0, 1.0])), None);
+}
+
+#[test]
+fn sphere_respects_the_interval() {
+    let r = ray([0.0, 0.0, 5.0], [0.0, 0.0, -1.0]);
+    assert!(Primitive::Sphere.intersect(&r, Interval::below(4.0)).is_none());
+    assert!(Primitive::Sphere.intersect(&r, Interval { max: 4.0, include_max: true }).is_some());
+    assert!(Primitive::Sphere.occluded(&r, Interval::below(4.5)));
+    assert!(!Primitive::Sphere.occluded(&r, Interval::below(3.5)));
+}
+
+#[test]
+fn cylinder_caps_side_and_axis_parallel_ray() {
+    assert_eq!(hit(Primitive::Cylinder, ray([0.0, 0.0, 5.0], [0.0, 0.0, -1.0])), Some((4.0, [0.0, 0.0, 1.0])));
+    assert_eq!(hit(Primitive::Cylinder, ray([0.5, 0.0, -3.0], [0.0, 0.0, 1.0])), Some((3.0, [0.0, 0.0, -1.0])));
+    assert_eq!(hit(Primitive::Cylinder, ray([5.0, 0.0, 0.5], [-1.0, 0.0, 0.0])), Some((4.0, [1.0, 0.0, 0.0])));
+    // Beyond the ends of the side.
+    assert_eq!(hit(Primitive::Cylinder, ray([5.0, 0.0, 1.5], [-1.0, 0.0, 0.0])), None);
+    // Parallel to the axis outside the radius.
+    assert_eq!(hit(Primitive::Cylinder, ray([2.0, 0.0, 5.0], [0.0, 0.0, -1.0])), None);
+}
+
+#[test]
+fn cone_side_normal_is_the_gradient_and_base_is_capped() {
+    // Horizontal ray at z = 0.5 hits the side at x = 0.5; gradient (0.5, 0, -0.5).
+    assert_eq!(hit(Primitive::Cone, ray([5.0, 0.0, 0.5], [-1.0, 0.0, 0.0])), Some((4.5, [0.5, 0.0, -0.5])));
+    assert_eq!(hit(Primitive::Cone, ray([0.2, 0.0, 5.0], [0.0, 0.0, -1.0])), Some((4.0, [0.0, 0.0, 1.0])));
+    // Below the apex: the lower nappe of x² + y² = z² is not part of the cone.
+    assert_eq!(hit(Primitive::Cone, ray([5.0, 0.0, -0.5], [-1.0, 0.0, 0.0])), None);
+}
+
+#[test]
+fn cone_apex_and_rays_parallel_to_the_side() {
+    // Along the axis from below: meets the apex.
+    let (t, normal) = hit(Primitive::Cone, ray([0.0, 0.0, -1.0], [0.0, 0.0, 1.0])).unwrap();
+    assert_eq!((t, normal), (1.0, [0.0, 0.0, -1.0]));
+    // Parallel to a generator line (A = 0), from outside: meets the far side once.
+    let (t, _) = hit(Primitive::Cone, ray([-2.0, 0.0, 0.0], [1.0, 0.0, 1.0])).unwrap();
+    assert!((t - 1.0).abs() < 1e-12, "{t}");
+    // Lying on the surface through the apex: only the base rim.
+    let (t, normal) = hit(Primitive::Cone, ray([1.0, 0.0, -1.0], [-1.0, 0.0, 1.0])).unwrap();
+    assert_eq!((t, normal), (2.0, [0.0, 0.0, 1.0]));
+}
+
+#[test]
+fn cube_faces_edges_and_corners() {
+    assert_eq!(hit(Primitive::Cube, ray([0.5, 0.5, 5.0], [0.0, 0.0, -1.0])), Some((4.0, [0.0, 0.0, 1.0])));
+    assert_eq!(hit(Primitive::Cube, ray([-3.0, 0.5, 0.5], [1.0, 0.0, 0.0])), Some((3.0, [-1.0, 0.0, 0.0])));
+    // Exactly along an edge: bounds are inclusive.
+    assert_eq!(hit(Primitive::Cube, ray([0.0, 0.0, 5.0], [0.0, 0.0, -1.0])), Some((4.0, [0.0, 0.0, 1.0])));
+    // Just outside the edge.
+    assert_eq!(hit(Primitive::Cube, ray([-1e-9, 0.0, 5.0], [0.0, 0.0, -1.0])), None);
+    // Through two opposite corners.
+    let (t, _) = hit(Primitive::Cube, ray([-1.0, -1.0, -1.0], [1.0, 1.0, 1.0])).unwrap();
+    assert_eq!(t, 1.0);
+    // From inside: the exit face.
+    assert_eq!(hit(Primitive::Cube, ray([0.5, 0.5, 0.5], [0.0, 2.0, 0.0])), Some((0.25, [0.0, 1.0, 0.0])));
+    // Zero direction never divides and never hits.
+    assert_eq!(hit(Primitive::Cube, ray([0.5, 0.5, 0.5], [0.0, 0.0, 0.0])), None);
+}
+
+#[test]
+fn zero_direction_misses_every_primitive() {
+    for primitive in Primitive::ALL {
+        assert_eq!(hit(primitive, ray([0.2, 0.1, 0.5], [0.0, 0.0, 0.0])), None, "{primitive:?}");
+    }
+}
+
+#[test]
+fn grazing_sphere_ray_is_a_single_tangent_hit() {
+    let tangent = hit(Primitive::Sphere, ray([1.0, 0.0, 5.0], [0.0, 0.0, -1.0]));
+    assert_eq!(tangent.map(|h| h.0), Some(5.0));
+    assert_eq!(hit(Primitive::Sphere, ray([1.0 + 1e-12, 0.0, 5.0], [0.0, 0.0, -1.0])), None);
+}
