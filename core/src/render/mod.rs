@@ -1,1 +1,15 @@
-//! TODO
+//! The per-pixel driver (RTRACE.C `raycast`, PGADPEND.C `pgatrace`, `rgbtrace`) and the
+//! statistics of Table 4.2.
+
+mod primary;
+mod shadow;
+mod statistics;
+mod trace;
+
+pub use primary::{nearest_hit, NearestHit};
+pub use shadow::in_shadow;
+pub use statistics::Statistics;
+pub use trace::{render_pga, render_rgb, shade_pixel, ShadedPixel};
+
+#[cfg(test)]
+mod tests;

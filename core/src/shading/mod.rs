@@ -1,6 +1,16 @@
-//! Shading (§4.2.4, SHADE.C): the PGA palette model and the RGB model, the look-up table, the
-//! 4x4 dither and the roughness noise.
+//! Shading (§4.2.4, §1.7.2; SHADE.C): the lighting terms, the PGA palette model, the RGB
+//! model, the 4x4 dither and the roughness noise.
 
+mod dither;
+mod lighting;
 mod palette;
+mod pga;
+mod rgb;
+mod roughness;
 
+pub use dither::{dither_threshold, DITHER_4X4};
+pub use lighting::{lighting, Lighting};
 pub use palette::{Palette, Rgb4};
+pub use pga::{pga_index, ShadingConstants};
+pub use rgb::rgb_pixel;
+pub use roughness::roughness_sample;
