@@ -1,1 +1,39 @@
-fn main() {}
+//! `microtrace`: render MicroTrace scenes on the desktop, read the thesis's image files back,
+//! benchmark, and watch the tracer work in a simulator window.
+
+use microtrace_sim::commands;
+
+use clap::{Parser, Subcommand};
+
+#[derive(Parser)]
+#[command(name = "microtrace", version, about = "MicroTrace: the 1989 microcomputer ray tracer, re-created")]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Render a .mts scene to a PNG and/or the thesis's file formats.
+    Render(commands::render::RenderArgs),
+    /// Read a PGA (compressed or not) or RGB image file back into a PNG.
+    Decode(commands::decode::DecodeArgs),
+    /// Measure the optimizations and the number types.
+    Bench(commands::bench::BenchArgs),
+    /// Open the simulator window and watch a scene render.
+    View(commands::view::ViewArgs),
+}
+
+fn main() {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Render(args) => commands::render::run(args),
+        Command::Decode(args) => commands::decode::run(args),
+        Command::Bench(args) => commands::bench::run(args),
+        Command::View(args) => commands::view::run(args),
+    };
+    if let Err(error) = result {
+        eprintln!("microtrace: {error:#}");
+        std::process::exit(1);
+    }
+}

@@ -1,0 +1,38 @@
+//! `microtrace bench`: `--thesis` reproduces the thesis's Tables 4.3 and 4.4 (the
+//! optimizations); `--numbers` reports speed against error for every number type.
+
+use std::path::PathBuf;
+
+#[path = "bench_numbers.rs"]
+mod numbers;
+#[path = "bench_thesis.rs"]
+mod thesis;
+
+#[derive(clap::Args, Clone, Debug)]
+pub struct BenchArgs {
+    /// Tables 4.3 and 4.4: both thesis scenes under the thesis's six configurations.
+    #[arg(long)]
+    pub thesis: bool,
+    /// Speed against error for every number type.
+    #[arg(long)]
+    pub numbers: bool,
+    /// Where the thesis scenes are.
+    #[arg(long, default_value = "scenes")]
+    pub scenes: PathBuf,
+    /// Write the report (Markdown) here as well as to stdout.
+    #[arg(long, value_name = "FILE.md")]
+    pub out: Option<PathBuf>,
+}
+
+pub fn run(args: BenchArgs) -> anyhow::Result<()> {
+    if !args.thesis && !args.numbers {
+        anyhow::bail!("choose --thesis (optimizations, Tables 4.3 and 4.4) or --numbers (number types)");
+    }
+    if args.thesis {
+        thesis::run(&args)?;
+    }
+    if args.numbers {
+        numbers::run(&args)?;
+    }
+    Ok(())
+}

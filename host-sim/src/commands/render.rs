@@ -1,0 +1,171 @@
+//! `microtrace render SCENE.mts --out IMAGE.png`: render a scene to a PNG and/or the thesis's
+//! file formats. Every file is written whole or not at all.
+
+use std::path::PathBuf;
+
+use anyhow::{bail, Context};
+use microtrace::scene::Optimizations;
+
+use crate::files;
+use crate::number_type::NumberType;
+use crate::rendering::{render_scene, Mode, Pixels, Rendered};
+use crate::scene_file::{self, parse_optimizations, parse_size, parse_switch};
+
+#[derive(clap::Args, Clone, Debug)]
+pub struct RenderArgs {
+    /// The scene (.mts).
+    pub scene: PathBuf,
+    /// Write the image as a PNG.
+    #[arg(long, value_name = "IMAGE.png")]
+    pub out: Option<PathBuf>,
+    /// The number type to trace in.
+    #[arg(long, value_enum, default_value = "f64")]
+    pub number: NumberType,
+    /// PGA palette mode or 24-bit RGB mode.
+    #[arg(long, value_enum, default_value = "pga")]
+    pub mode: Mode,
+    /// Replace the viewport by W x H pixels; the scene's window stays in view, with square pixels.
+    #[arg(long, value_name = "WxH", value_parser = parse_size)]
+    pub size: Option<(u16, u16)>,
+    /// Override the scene's `optimize` statement: all, none, or a list like extents,grid.
+    #[arg(long, value_name = "LIST", value_parser = parse_optimizations)]
+    pub opt: Option<Optimizations>,
+    /// Override the scene's `shadows` statement.
+    #[arg(long, value_name = "on|off", value_parser = parse_switch)]
+    pub shadows: Option<bool>,
+    /// Override the scene's `dither` statement.
+    #[arg(long, value_name = "on|off", value_parser = parse_switch)]
+    pub dither: Option<bool>,
+    /// Write the thesis's PGA image file (compressed 0xD9 records unless --uncompressed).
+    #[arg(long, value_name = "FILE")]
+    pub pga: Option<PathBuf>,
+    /// With --pga: write the uncompressed 0xFF format.
+    #[arg(long, requires = "pga")]
+    pub uncompressed: bool,
+    /// Write the thesis's RGB image file (0x00 format; needs --mode rgb).
+    #[arg(long, value_name = "FILE")]
+    pub rgb: Option<PathBuf>,
+    /// Write the scene's 256-entry look-up table file.
+    #[arg(long, value_name = "FILE")]
+    pub lut: Option<PathBuf>,
+    /// Print the statistics of the thesis's Table 4.2 on stderr.
+    #[arg(long)]
+    pub stats: bool,
+    /// Write the statistics as JSON.
+    #[arg(long, value_name = "FILE")]
+    pub stats_json: Option<PathBuf>,
+}
+
+pub fn run(args: RenderArgs) -> anyhow::Result<()> {
+    if args.out.is_none() && args.pga.is_none() && args.rgb.is_none() && args.lut.is_none() && !args.stats && args.stats_json.is_none() {
+        bail!("nothing to write: give --out IMAGE.png (or --pga, --rgb, --lut, --stats, --stats-json)");
+    }
+    if args.pga.is_some() && args.mode != Mode::Pga {
+        bail!("--pga writes palette indices: it needs --mode pga");
+    }
+    if args.rgb.is_some() && args.mode != Mode::Rgb {
+        bail!("--rgb writes the RGB file format: it needs --mode rgb");
+    }
+    let mut scene = scene_file::load(&args.scene)?;
+    apply_overrides(&mut scene, &args);
+    let label = format!("rendering {}", args.scene.display());
+    let rendered = render_scene(&scene, args.number, args.mode, Some(&label))?;
+    write_outputs(&args, &rendered)
+}
+
+pub fn apply_overrides(scene: &mut scene_file::HostScene, args: &RenderArgs) {
+    if let Some((width, height)) = args.size {
+        scene.fit_to_size(width, height);
+    }
+    if let Some(optimizations) = args.opt {
+        scene.optimizations = optimizations;
+    }
+    if let Some(shadows) = args.shadows {
+        scene.shadows = shadows;
+    }
+    if let Some(dither) = args.dither {
+        scene.dither = dither;
+    }
+}
+
+fn write_outputs(args: &RenderArgs, rendered: &Rendered) -> anyhow::Result<()> {
+    let (width, height) = (rendered.width(), rendered.height());
+    if let Some(path) = &args.out {
+        let written = match &rendered.pixels {
+            Pixels::Pga(indices) => files::write_png_indexed(path, width, height, indices, &rendered.palette),
+            Pixels::Rgb(rgb) => files::write_png_rgb(path, width, height, rgb),
+        };
+        written.with_context(|| format!("cannot write {}", path.display()))?;
+    }
+    if let (Some(path), Pixels::Pga(indices)) = (&args.pga, &rendered.pixels) {
+        let written = if args.uncompressed {
+            files::write_pga_uncompressed(path, rendered.viewport, indices)
+        } else {
+            files::write_pga_compressed(path, rendered.viewport, indices)
+        };
+        written.with_context(|| format!("cannot write {}", path.display()))?;
+    }
+    if let (Some(path), Pixels::Rgb(rgb)) = (&args.rgb, &rendered.pixels) {
+        files::write_rgb_file(path, rendered.viewport, rgb).with_context(|| format!("cannot write {}", path.display()))?;
+    }
+    if let Some(path) = &args.lut {
+        files::write_lut_file(path, &rendered.palette).with_context(|| format!("cannot write {}", path.display()))?;
+    }
+    if args.stats {
+        eprint!("{}", statistics_table(rendered));
+    }
+    if let Some(path) = &args.stats_json {
+        let json = statistics_json(rendered);
+        files::write_atomically(path, |out| out.write_all(json.as_bytes()))
+            .with_context(|| format!("cannot write {}", path.display()))?;
+    }
+    Ok(())
+}
+
+/// The statistics as JSON with the keys of Table 4.2 (and the shadow counts).
+pub fn statistics_json(rendered: &Rendered) -> String {
+    let s = &rendered.statistics;
+    format!(
+        "{{\"pixels\": {}, \"rays_traced\": {}, \"rays_intersected\": {}, \"ro_tests\": {}, \"ro_hits\": {}, \
+         \"shadow_rays\": {}, \"shadow_tests\": {}, \"preprocess_ms\": {:.3}, \"trace_ms\": {:.3}}}\n",
+        s.pixels,
+        s.rays_traced,
+        s.rays_intersected,
+        s.ro_tests,
+        s.ro_hits,
+        s.shadow_rays,
+        s.shadow_tests,
+        rendered.preprocess.as_secs_f64() * 1e3,
+        rendered.trace.as_secs_f64() * 1e3,
+    )
+}
+
+/// Table 4.2's figures as the thesis defines them (digest §9.1).
+pub fn statistics_table(rendered: &Rendered) -> String {
+    let s = &rendered.statistics;
+    let percent = |part: u64, whole: u64| if whole == 0 { 0.0 } else { 100.0 * part as f64 / whole as f64 };
+    let per = |part: u64, whole: u64| if whole == 0 { 0.0 } else { part as f64 / whole as f64 };
+    format!(
+        "pixels            {}\n\
+         rays traced       {:.2}%\n\
+         rays intersected  {:.2}%\n\
+         R-O tests per ray {:.2}\n\
+         % hits            {:.2}%\n\
+         total R-O tests   {}\n\
+         shadow rays       {}\n\
+         shadow tests      {} ({:.2} per shadow ray)\n\
+         preprocess        {:.1} ms\n\
+         trace             {:.1} ms\n",
+        s.pixels,
+        percent(s.rays_traced, s.pixels),
+        percent(s.rays_intersected, s.rays_traced),
+        per(s.ro_tests, s.rays_traced),
+        percent(s.ro_hits, s.ro_tests),
+        s.ro_tests,
+        s.shadow_rays,
+        s.shadow_tests,
+        per(s.shadow_tests, s.shadow_rays),
+        rendered.preprocess.as_secs_f64() * 1e3,
+        rendered.trace.as_secs_f64() * 1e3,
+    )
+}

@@ -1,0 +1,9 @@
+//! The desktop side of MicroTrace: the `microtrace` command's pieces, as a library so that the
+//! integration tests can drive them.
+
+pub mod commands;
+pub mod files;
+pub mod number_type;
+pub mod progress;
+pub mod rendering;
+pub mod scene_file;

@@ -1,0 +1,97 @@
+//! Rendering a scene description into memory with a chosen number type and mode, timing the
+//! preprocess and trace phases separately (Table 4.2's two times).
+
+use std::time::{Duration, Instant};
+
+use anyhow::bail;
+use clap::ValueEnum;
+use microtrace::pixel::{FrameBuffer, Rgb888};
+use microtrace::render::{render_pga, render_rgb, Statistics};
+use microtrace::scene::{Scene, Viewport};
+use microtrace::shading::Palette;
+
+use crate::number_type::NumberType;
+use crate::progress::Progress;
+use crate::scene_file::{HostScene, HOST_MAX_OBJECTS};
+use crate::with_number_type;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum Mode {
+    /// Palette indices through the 256-entry look-up table (the thesis's default).
+    Pga,
+    /// 24-bit colour.
+    Rgb,
+}
+
+#[derive(Clone, Debug)]
+pub enum Pixels {
+    Pga(Vec<u8>),
+    Rgb(Vec<Rgb888>),
+}
+
+#[derive(Clone, Debug)]
+pub struct Rendered {
+    pub viewport: Viewport,
+    pub palette: Palette,
+    pub pixels: Pixels,
+    pub statistics: Statistics,
+    pub preprocess: Duration,
+    pub trace: Duration,
+}
+
+impl Rendered {
+    pub fn width(&self) -> u16 {
+        self.viewport.width()
+    }
+
+    pub fn height(&self) -> u16 {
+        self.viewport.height()
+    }
+
+    /// The image as RGB, indexed pixels through the look-up table.
+    pub fn to_rgb(&self) -> Vec<Rgb888> {
+        match &self.pixels {
+            Pixels::Pga(indices) => indices.iter().map(|index| self.palette.entry(*index).to_rgb888()).collect(),
+            Pixels::Rgb(rgb) => rgb.clone(),
+        }
+    }
+}
+
+/// Prepares and renders `scene`. With `progress` set, shows progress on a terminal.
+pub fn render_scene(scene: &HostScene, number: NumberType, mode: Mode, progress: Option<&str>) -> anyhow::Result<Rendered> {
+    let viewport = scene.viewport;
+    let (width, height) = (viewport.width(), viewport.height());
+    let pixel_count = usize::from(width) * usize::from(height);
+    if pixel_count > 64 << 20 {
+        bail!("the viewport is {width}x{height}: too large to render in memory");
+    }
+    with_number_type!(number, N => {
+        let started = Instant::now();
+        let prepared = Box::new(Scene::<N, HOST_MAX_OBJECTS>::prepare(scene).map_err(|error| anyhow::anyhow!("{error}"))?);
+        let preprocess = started.elapsed();
+        let mut statistics = Statistics::default();
+        let label = progress.unwrap_or("");
+        let started = Instant::now();
+        let pixels = match mode {
+            Mode::Pga => {
+                let mut buffer = vec![0u8; pixel_count];
+                let frame = FrameBuffer::new(&mut buffer, width, height).expect("buffer sized to the viewport");
+                let mut sink = Progress::new(frame, height, label);
+                sink.enabled &= progress.is_some();
+                render_pga(&*prepared, &mut sink, &mut statistics);
+                sink.finish();
+                Pixels::Pga(buffer)
+            }
+            Mode::Rgb => {
+                let mut buffer = vec![[0u8; 3]; pixel_count];
+                let frame = FrameBuffer::new(&mut buffer, width, height).expect("buffer sized to the viewport");
+                let mut sink = Progress::new(frame, height, label);
+                sink.enabled &= progress.is_some();
+                render_rgb(&*prepared, &mut sink, &mut statistics);
+                sink.finish();
+                Pixels::Rgb(buffer)
+            }
+        };
+        Ok(Rendered { viewport, palette: scene.palette, pixels, statistics, preprocess, trace: started.elapsed() })
+    })
+}

@@ -1,0 +1,63 @@
+//! Loading a `.mts` file with errors that name the file and line, and the command-line
+//! overrides every command shares.
+
+use std::path::Path;
+
+use anyhow::{bail, Context};
+use microtrace::scene::{Optimizations, SceneDescription};
+
+/// How many objects a host build holds (the firmware sizes this to each scene).
+pub const HOST_MAX_OBJECTS: usize = 512;
+
+pub type HostScene = SceneDescription<HOST_MAX_OBJECTS>;
+
+pub fn load(path: &Path) -> anyhow::Result<Box<HostScene>> {
+    let text = std::fs::read(path).with_context(|| format!("cannot read scene {}", path.display()))?;
+    match microtrace::parser::parse::<HOST_MAX_OBJECTS>(&text) {
+        Ok(scene) => Ok(Box::new(scene)),
+        Err(error) => bail!("{}:{}", path.display(), error),
+    }
+}
+
+/// Parses `WxH`.
+pub fn parse_size(text: &str) -> Result<(u16, u16), String> {
+    let (width, height) = text.split_once(['x', 'X']).ok_or_else(|| format!("expected WxH, got `{text}`"))?;
+    let parse = |part: &str| match part.trim().parse::<u16>() {
+        Ok(value) if (1..=8192).contains(&value) => Ok(value),
+        _ => Err(format!("size `{text}`: each side must be a whole number from 1 to 8192")),
+    };
+    Ok((parse(width)?, parse(height)?))
+}
+
+/// Parses `all`, `none`, or a comma-separated list of pixelbuffer, extents, grid, sortlist.
+pub fn parse_optimizations(text: &str) -> Result<Optimizations, String> {
+    match text {
+        "all" => return Ok(Optimizations::ALL),
+        "none" => return Ok(Optimizations::NONE),
+        _ => {}
+    }
+    let mut chosen = Optimizations::NONE;
+    for word in text.split(',') {
+        match word.trim() {
+            "pixelbuffer" => chosen.pixelbuffer = true,
+            "extents" => chosen.extents = true,
+            "grid" => chosen.grid = true,
+            "sortlist" => chosen.sortlist = true,
+            other => {
+                return Err(format!(
+                    "unknown optimization `{other}`: use all, none, or any of pixelbuffer,extents,grid,sortlist"
+                ))
+            }
+        }
+    }
+    Ok(chosen)
+}
+
+/// Parses `on` / `off`.
+pub fn parse_switch(text: &str) -> Result<bool, String> {
+    match text {
+        "on" => Ok(true),
+        "off" => Ok(false),
+        _ => Err(format!("expected on or off, got `{text}`")),
+    }
+}
