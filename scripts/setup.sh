@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Installs what MicroTrace's builds and tests need, when it is missing: the Cortex-M rust
+# targets and llvm-tools (firmware), QEMU (firmware tests), SDL2 (the simulator window),
+# Xvfb (the window test without a display). Safe to run again; does nothing when all is there.
+set -euo pipefail
+
+need_rustup=()
+installed_targets=$(rustup target list --installed 2>/dev/null || true)
+for target in thumbv7m-none-eabi thumbv7em-none-eabihf thumbv6m-none-eabi; do
+  grep -qx "$target" <<<"$installed_targets" || need_rustup+=("$target")
+done
+if [ ${#need_rustup[@]} -gt 0 ]; then
+  echo "setup: adding rust targets ${need_rustup[*]}" >&2
+  rustup target add "${need_rustup[@]}" >&2
+fi
+if ! rustup component list --installed 2>/dev/null | grep -q '^llvm-tools'; then
+  echo "setup: adding the llvm-tools component" >&2
+  rustup component add llvm-tools >&2
+fi
+
+need_apt=()
+command -v qemu-system-arm >/dev/null || need_apt+=(qemu-system-arm)
+pkg-config --exists sdl2 2>/dev/null || need_apt+=(libsdl2-dev pkg-config)
+command -v Xvfb >/dev/null || need_apt+=(xvfb)
+command -v xwd >/dev/null || need_apt+=(x11-apps)
+if [ ${#need_apt[@]} -gt 0 ]; then
+  echo "setup: installing ${need_apt[*]}" >&2
+  sudo_prefix=""
+  [ "$(id -u)" -eq 0 ] || sudo_prefix="sudo"
+  $sudo_prefix apt-get update -qq >&2
+  DEBIAN_FRONTEND=noninteractive $sudo_prefix apt-get install -y -qq "${need_apt[@]}" >&2
+fi
