@@ -82,3 +82,6 @@ impl<P: Copy, S: PixelSource<P> + ?Sized> PixelSource<P> for &mut S {
         (**self).read_row(x, y, values)
     }
 }
+
+#[cfg(test)]
+mod tests;
