@@ -7,7 +7,16 @@
 //! Scene set-up (matrix composition, inversion, trigonometry) is done once in `f64` and
 //! converted with [`Number::from_f64`]; only per-pixel work runs in the number type.
 
+#[cfg(feature = "fixed-point")]
+mod fixed;
 mod float;
+#[cfg(feature = "micromath")]
+mod micromath;
+
+#[cfg(feature = "fixed-point")]
+pub use fixed::{Fixed, Fixed16};
+#[cfg(feature = "micromath")]
+pub use micromath::F32Micro;
 
 use core::fmt::Debug;
 use core::ops::{Add, Mul, Neg, Sub};
@@ -95,5 +104,16 @@ pub trait Number:
     /// `|v|` of a 3-vector. A type with a narrow range overrides this to scale first.
     fn length3(v: [Self; 3]) -> Self {
         Self::dot3(v, v).sqrt()
+    }
+
+    /// Whether a scene value (a coordinate, a light position, a matrix entry) of this size is
+    /// safe in this type: it converts without saturating, and the squares and dot products the
+    /// tracer forms from such values stay in range. Scene preparation can use it to reject a
+    /// scene that does not fit and name the object. Values too small to resolve are accepted
+    /// (they round to zero or lose relative precision, which the caller cannot act on).
+    ///
+    /// The default accepts every finite value, which is right for the float types.
+    fn can_represent(value: f64) -> bool {
+        value.is_finite()
     }
 }

@@ -1,0 +1,387 @@
+//! Fixed-point number types for microcontrollers without an FPU, stored in the `fixed` crate's
+//! types (feature `fixed-point`).
+//!
+//! - [`Fixed`] (`NAME = "fixed"`, the recommended one): Q32.32 in an `i64` ([`I32F32`]).
+//!   Range ±2³¹ (≈ ±2.1·10⁹), resolution 2⁻³² (≈ 2.3·10⁻¹⁰). Wide enough that the tracer's
+//!   one-type-for-everything design works unchanged: world coordinates up to ±26 000 and their
+//!   squares fit, and unit directions scaled by 1/radius into object space keep ≥ 20
+//!   significant bits. Multiplication is a 64×64→128-bit product built from four 32×32→64
+//!   `UMULL`s; addition is `ADDS`/`ADC` plus a saturation check.
+//! - [`Fixed16`] (`NAME = "fixed16"`, for comparison): Q16.16 in an `i32` ([`I16F16`]) with
+//!   64-bit intermediate products, a `dot3` that accumulates three exact products before one
+//!   rounding, and a `length3`/`sqrt` through an exact 64-bit integer square root. Cheaper per
+//!   operation (one `SMULL`), but a unit direction is only good to 2⁻¹⁶ and object-space
+//!   directions (scaled by 1/radius) lose most of their bits; see the tests for the cost.
+//!
+//! Both saturate instead of wrapping: every operator is implemented on the raw bits with
+//! explicit saturating or checked integer operations, never with `fixed`'s own operators (which
+//! panic on overflow in debug builds). Nothing here can panic.
+
+use core::fmt;
+use core::ops::{Add, Mul, Neg, Sub};
+
+use fixed::types::{I16F16, I32F32};
+
+use super::Number;
+
+// ---------------------------------------------------------------------------------------------
+// Q32.32
+// ---------------------------------------------------------------------------------------------
+
+/// Q32.32 fixed point: the recommended number type for FPU-less targets (see the module docs).
+#[derive(Clone, Copy, Default, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct Fixed(pub I32F32);
+
+/// 2³²: one unit of `Fixed` in raw bits.
+const ONE_32: f64 = 4_294_967_296.0;
+
+impl Fixed {
+    /// The largest magnitude [`Number::can_represent`] accepts for a scene value: three squares
+    /// of it still add up below the range (3·26 000² ≈ 2.03·10⁹ < 2³¹), so `dot3` of two such
+    /// vectors never saturates.
+    pub const COORDINATE_LIMIT: f64 = 26_000.0;
+
+    pub const fn from_bits(bits: i64) -> Self {
+        Self(I32F32::from_bits(bits))
+    }
+
+    pub const fn to_bits(self) -> i64 {
+        self.0.to_bits()
+    }
+}
+
+/// `a·b` of two Q32.32 values, rounded to nearest (ties away from zero), saturating.
+///
+/// Sign and magnitude: four 32×32→64 unsigned products (one `UMULL` each on Cortex-M3), the
+/// middle 64 bits of the 128-bit product summed with checked adds.
+#[inline]
+fn mul_q32(a: i64, b: i64) -> i64 {
+    let negative = (a ^ b) < 0;
+    let (x, y) = (a.unsigned_abs(), b.unsigned_abs());
+    // x, y ≤ 2^63, so the high halves are ≤ 2^31.
+    let (x_low, x_high) = (x & 0xFFFF_FFFF, x >> 32);
+    let (y_low, y_high) = (y & 0xFFFF_FFFF, y >> 32);
+    let high = x_high * y_high; // ≤ 2^62
+    let saturated = if negative { i64::MIN } else { i64::MAX };
+    if high >= 1 << 31 {
+        return saturated;
+    }
+    let low = x_low * y_low; // < 2^64
+    let middle_1 = x_low * y_high; // < 2^63
+    let middle_2 = x_high * y_low; // < 2^63
+    let rounded_low = (low >> 32) + ((low >> 31) & 1);
+    let sum = (high << 32).checked_add(middle_1).and_then(|s| s.checked_add(middle_2)).and_then(|s| s.checked_add(rounded_low));
+    let limit = if negative { 1u64 << 63 } else { i64::MAX as u64 };
+    match sum {
+        Some(magnitude) if magnitude <= limit => {
+            // magnitude = 2^63 only when negative: wrapping_neg gives i64::MIN, exactly right.
+            if negative { (magnitude as i64).wrapping_neg() } else { magnitude as i64 }
+        }
+        _ => saturated,
+    }
+}
+
+/// `a / b` in Q32.32, rounded to nearest, saturating; `None` for `b == 0`.
+#[inline]
+fn div_q32(a: i64, b: i64) -> Option<i64> {
+    if b == 0 {
+        return None;
+    }
+    let negative = (a ^ b) < 0;
+    let (x, y) = (a.unsigned_abs(), b.unsigned_abs());
+    let limit = if negative { 1u64 << 63 } else { i64::MAX as u64 };
+    let magnitude: u64 = if x < 1 << 32 {
+        // |a| < 1: the shifted dividend fits 64 bits, a 64-bit division is enough.
+        let n = x << 32;
+        // n / y rounded: (n + y/2) may overflow u64, so round through the remainder.
+        let (q, r) = (n / y, n % y);
+        q + u64::from(r >= y - r)
+    } else {
+        let n = u128::from(x) << 32;
+        let d = u128::from(y);
+        let (q, r) = (n / d, n % d);
+        let q = q + u128::from(r >= d - r);
+        if q > u128::from(limit) {
+            return Some(if negative { i64::MIN } else { i64::MAX });
+        }
+        q as u64
+    };
+    Some(if magnitude > limit {
+        if negative { i64::MIN } else { i64::MAX }
+    } else if negative {
+        (magnitude as i64).wrapping_neg()
+    } else {
+        magnitude as i64
+    })
+}
+
+/// `√(raw·2⁻³²)` in Q32.32 raw bits, for `raw > 0`: `isqrt(raw·2³²)` through a 64-bit integer
+/// square root of the normalised value (exact for values below 1, within 2⁻³¹ relative above).
+#[inline]
+fn sqrt_q32(raw: i64) -> i64 {
+    if raw <= 0 {
+        return 0;
+    }
+    let x = raw as u64;
+    let shift = x.leading_zeros() & !1; // even, so the root shifts by whole bits
+    if shift >= 32 {
+        (x << 32).isqrt() as i64
+    } else {
+        // √(x·2^32) = √(x·2^shift)·2^((32 − shift)/2); the root is < 2^32, the result < 2^48.
+        ((x << shift).isqrt() << ((32 - shift) / 2)) as i64
+    }
+}
+
+impl fmt::Debug for Fixed {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "Fixed({})", self.to_f64())
+    }
+}
+
+impl fmt::Display for Fixed {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        fmt::Display::fmt(&self.0, f)
+    }
+}
+
+impl Add for Fixed {
+    type Output = Self;
+    #[inline]
+    fn add(self, other: Self) -> Self {
+        Self::from_bits(self.to_bits().saturating_add(other.to_bits()))
+    }
+}
+
+impl Sub for Fixed {
+    type Output = Self;
+    #[inline]
+    fn sub(self, other: Self) -> Self {
+        Self::from_bits(self.to_bits().saturating_sub(other.to_bits()))
+    }
+}
+
+impl Mul for Fixed {
+    type Output = Self;
+    #[inline]
+    fn mul(self, other: Self) -> Self {
+        Self::from_bits(mul_q32(self.to_bits(), other.to_bits()))
+    }
+}
+
+impl Neg for Fixed {
+    type Output = Self;
+    #[inline]
+    fn neg(self) -> Self {
+        Self::from_bits(self.to_bits().saturating_neg())
+    }
+}
+
+impl Number for Fixed {
+    const NAME: &'static str = "fixed";
+    const ZERO: Self = Self::from_bits(0);
+    const ONE: Self = Self::from_bits(1 << 32);
+    const MAX: Self = Self::from_bits(i64::MAX);
+
+    fn from_f64(value: f64) -> Self {
+        // `as` saturates and maps NaN to 0.
+        Self::from_bits(libm::round(value * ONE_32) as i64)
+    }
+
+    fn to_f64(self) -> f64 {
+        self.to_bits() as f64 / ONE_32
+    }
+
+    fn from_i32(value: i32) -> Self {
+        Self::from_bits(i64::from(value) << 32)
+    }
+
+    fn sqrt(self) -> Self {
+        Self::from_bits(sqrt_q32(self.to_bits()))
+    }
+
+    fn checked_div(self, divisor: Self) -> Option<Self> {
+        div_q32(self.to_bits(), divisor.to_bits()).map(Self::from_bits)
+    }
+
+    fn floor_to_i32(self) -> i32 {
+        // An arithmetic shift floors; any i64 shifted right by 32 fits an i32.
+        (self.to_bits() >> 32) as i32
+    }
+
+    fn abs(self) -> Self {
+        Self::from_bits(self.to_bits().saturating_abs())
+    }
+
+    /// Pre-scales vectors with a component of 2¹⁴ or more so the squares cannot saturate; the
+    /// bits shifted out are below the result's relative precision.
+    fn length3(v: [Self; 3]) -> Self {
+        let largest = v.iter().map(|c| c.to_bits().unsigned_abs()).max().unwrap_or(0);
+        // Components below 2^14 (raw 2^46): the sum of squares is below 3·2^28 < 2^31.
+        if largest < 1 << 46 {
+            return Self::dot3(v, v).sqrt();
+        }
+        // Shift right until the largest component is below 2^46 raw, then shift the result back.
+        let shift = 64 - largest.leading_zeros() - 46; // 1..=18
+        let scaled = v.map(|c| Self::from_bits(c.to_bits() >> shift));
+        let length = Self::dot3(scaled, scaled).sqrt().to_bits();
+        Self::from_bits(length.checked_shl(shift).filter(|l| l >> shift == length).unwrap_or(i64::MAX))
+    }
+
+    fn can_represent(value: f64) -> bool {
+        value.is_finite() && value.abs() <= Self::COORDINATE_LIMIT
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Q16.16
+// ---------------------------------------------------------------------------------------------
+
+/// Q16.16 fixed point with 64-bit intermediates (see the module docs): cheaper than [`Fixed`],
+/// measurably less accurate for this tracer.
+#[derive(Clone, Copy, Default, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct Fixed16(pub I16F16);
+
+/// 2¹⁶: one unit of `Fixed16` in raw bits.
+const ONE_16: f64 = 65_536.0;
+
+impl Fixed16 {
+    /// The largest magnitude [`Number::can_represent`] accepts: half the range, so a sum or
+    /// difference of two such values does not saturate. Squared object-space distances above
+    /// 32 767 (distances above 181 radii) still saturate.
+    pub const COORDINATE_LIMIT: f64 = 16_384.0;
+
+    pub const fn from_bits(bits: i32) -> Self {
+        Self(I16F16::from_bits(bits))
+    }
+
+    pub const fn to_bits(self) -> i32 {
+        self.0.to_bits()
+    }
+}
+
+#[inline]
+fn saturate_i32(value: i64) -> i32 {
+    value.clamp(i64::from(i32::MIN), i64::from(i32::MAX)) as i32
+}
+
+/// A Q32.32 `i64` (a product of two Q16.16) rounded to Q16.16 (to nearest, ties up), saturating.
+#[inline]
+fn round_q32_to_q16(product: i64) -> i32 {
+    saturate_i32(product.saturating_add(1 << 15) >> 16)
+}
+
+impl fmt::Debug for Fixed16 {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "Fixed16({})", self.to_f64())
+    }
+}
+
+impl fmt::Display for Fixed16 {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        fmt::Display::fmt(&self.0, f)
+    }
+}
+
+impl Add for Fixed16 {
+    type Output = Self;
+    #[inline]
+    fn add(self, other: Self) -> Self {
+        Self::from_bits(self.to_bits().saturating_add(other.to_bits()))
+    }
+}
+
+impl Sub for Fixed16 {
+    type Output = Self;
+    #[inline]
+    fn sub(self, other: Self) -> Self {
+        Self::from_bits(self.to_bits().saturating_sub(other.to_bits()))
+    }
+}
+
+impl Mul for Fixed16 {
+    type Output = Self;
+    #[inline]
+    fn mul(self, other: Self) -> Self {
+        // |a·b| ≤ 2^62: the i64 product (one SMULL) cannot overflow.
+        Self::from_bits(round_q32_to_q16(i64::from(self.to_bits()) * i64::from(other.to_bits())))
+    }
+}
+
+impl Neg for Fixed16 {
+    type Output = Self;
+    #[inline]
+    fn neg(self) -> Self {
+        Self::from_bits(self.to_bits().saturating_neg())
+    }
+}
+
+impl Number for Fixed16 {
+    const NAME: &'static str = "fixed16";
+    const ZERO: Self = Self::from_bits(0);
+    const ONE: Self = Self::from_bits(1 << 16);
+    const MAX: Self = Self::from_bits(i32::MAX);
+
+    fn from_f64(value: f64) -> Self {
+        Self::from_bits(libm::round(value * ONE_16) as i32)
+    }
+
+    fn to_f64(self) -> f64 {
+        f64::from(self.to_bits()) / ONE_16
+    }
+
+    fn from_i32(value: i32) -> Self {
+        Self::from_bits(saturate_i32(i64::from(value) << 16))
+    }
+
+    /// Exact: `⌊√(raw·2¹⁶)⌋` in integers.
+    fn sqrt(self) -> Self {
+        let raw = self.to_bits();
+        if raw <= 0 {
+            return Self::ZERO;
+        }
+        // < 2^47, so the root is < 2^24: no saturation.
+        Self::from_bits(((raw as u64) << 16).isqrt() as i32)
+    }
+
+    fn checked_div(self, divisor: Self) -> Option<Self> {
+        let (a, b) = (i64::from(self.to_bits()), i64::from(divisor.to_bits()));
+        if b == 0 {
+            return None;
+        }
+        let negative = (a ^ b) < 0;
+        let (x, y) = (a.unsigned_abs() << 16, b.unsigned_abs()); // x < 2^48
+        let (q, r) = (x / y, x % y);
+        let magnitude = (q + u64::from(r >= y - r)) as i64; // < 2^49
+        Some(Self::from_bits(saturate_i32(if negative { -magnitude } else { magnitude })))
+    }
+
+    fn floor_to_i32(self) -> i32 {
+        self.to_bits() >> 16
+    }
+
+    fn abs(self) -> Self {
+        Self::from_bits(self.to_bits().saturating_abs())
+    }
+
+    /// Three exact 64-bit products summed before a single rounding.
+    fn dot3(a: [Self; 3], b: [Self; 3]) -> Self {
+        let product = |i: usize| i64::from(a[i].to_bits()) * i64::from(b[i].to_bits());
+        // Each product is ≤ 2^62; if a partial sum saturates, the total is beyond the range of
+        // the result anyway, so the saturated result is the right one.
+        Self::from_bits(round_q32_to_q16(product(0).saturating_add(product(1)).saturating_add(product(2))))
+    }
+
+    /// The exact sum of squares in a `u64` (≤ 3·2⁶²) and its integer square root, which is
+    /// already Q16.16: `√(S·2⁻³²) = isqrt(S)·2⁻¹⁶`.
+    fn length3(v: [Self; 3]) -> Self {
+        let sum: u64 = v.iter().map(|c| {
+            let m = u64::from(c.to_bits().unsigned_abs());
+            m * m
+        }).sum();
+        Self::from_bits(sum.isqrt().min(i32::MAX as u64) as i32)
+    }
+
+    fn can_represent(value: f64) -> bool {
+        value.is_finite() && value.abs() <= Self::COORDINATE_LIMIT
+    }
+}
