@@ -1,0 +1,276 @@
+//! Build script of the firmware:
+//! 1. puts the selected board's `memory.x` where cortex-m-rt's `link.x` finds it;
+//! 2. parses the scene named by `MICROTRACE_SCENE` with the same parser the host uses, fits it
+//!    to the display (`fit_to_size`, as `microtrace render --size 128x64` does), applies the
+//!    `MICROTRACE_OPT` override, checks the scene's primitives against the enabled features,
+//!    and writes the scene as Rust constants into `OUT_DIR/scene.rs`.
+//!
+//! Environment (all optional):
+//! - `MICROTRACE_SCENE`: absolute path of a `.mts` file (default: `../scenes/snooker.mts`).
+//! - `MICROTRACE_NUMBER`: `f64` or `f32` (default `f32`).
+//! - `MICROTRACE_SIZE`: `WIDTHxHEIGHT` of the render (default `128x64`, the OLED).
+//! - `MICROTRACE_OPT`: `scene` (default: keep the scene's `optimize`), `all`, `none`, or a comma
+//!   list of `pixelbuffer,extents,grid,sortlist`.
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+use microtrace::scene::{Light, ObjectDescription, Optimizations, Primitive, Projection, SceneDescription};
+
+/// Objects a scene file may hold at build time; the firmware itself is sized by the scene.
+const PARSE_CAPACITY: usize = 512;
+
+fn main() {
+    let manifest_dir = PathBuf::from(env("CARGO_MANIFEST_DIR").unwrap());
+    let out_dir = PathBuf::from(env("OUT_DIR").unwrap());
+
+    let board = select_board();
+    copy_memory_layout(&manifest_dir, &out_dir, board);
+
+    let scene_path = env("MICROTRACE_SCENE")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| manifest_dir.join("../scenes/snooker.mts"));
+    println!("cargo:rerun-if-changed={}", scene_path.display());
+    for name in ["MICROTRACE_SCENE", "MICROTRACE_NUMBER", "MICROTRACE_SIZE", "MICROTRACE_OPT"] {
+        println!("cargo:rerun-if-env-changed={name}");
+    }
+
+    let number = number_type(&env("MICROTRACE_NUMBER").unwrap_or_else(|| "f32".into()));
+    let (width, height) = render_size(&env("MICROTRACE_SIZE").unwrap_or_else(|| "128x64".into()));
+
+    let text = std::fs::read(&scene_path)
+        .unwrap_or_else(|error| fail(&format!("cannot read the scene {}: {error}", scene_path.display())));
+    let mut description = match microtrace::parser::parse::<PARSE_CAPACITY>(&text) {
+        Ok(description) => description,
+        Err(_) if env("MICROTRACE_TEMPORARY_BUILTIN").is_some() => temporary_builtin(),
+        Err(error) => fail(&format!("{}: {error}", scene_path.display())),
+    };
+    description.fit_to_size(width, height);
+    if let Some(optimizations) = optimization_override(env("MICROTRACE_OPT").as_deref()) {
+        description.optimizations = optimizations;
+    }
+    check_primitives(&description, &scene_path);
+
+    let source = generate(&description, &scene_path, number, board);
+    std::fs::write(out_dir.join("scene.rs"), source).unwrap();
+}
+
+fn env(name: &str) -> Option<String> {
+    std::env::var(name).ok().filter(|value| !value.is_empty())
+}
+
+/// Stops the build with `message` (cargo shows a failed build script's stderr).
+fn fail(message: &str) -> ! {
+    eprintln!("error: {message}");
+    std::process::exit(1);
+}
+
+#[derive(Clone, Copy)]
+enum Board {
+    Lm3s6965evb,
+    Mps2An386,
+}
+
+impl Board {
+    fn name(self) -> &'static str {
+        match self {
+            Board::Lm3s6965evb => "lm3s6965evb",
+            Board::Mps2An386 => "mps2-an386",
+        }
+    }
+}
+
+fn select_board() -> Board {
+    let lm3s = env("CARGO_FEATURE_LM3S6965EVB").is_some();
+    let mps2 = env("CARGO_FEATURE_MPS2_AN386").is_some();
+    match (lm3s, mps2) {
+        (true, false) => Board::Lm3s6965evb,
+        (false, true) => Board::Mps2An386,
+        _ => fail("enable exactly one board feature: `lm3s6965evb` or `mps2-an386`"),
+    }
+}
+
+fn copy_memory_layout(manifest_dir: &Path, out_dir: &Path, board: Board) {
+    let source = match board {
+        // The repository root's memory.x describes the default board.
+        Board::Lm3s6965evb => manifest_dir.join("../memory.x"),
+        Board::Mps2An386 => manifest_dir.join("src/board/mps2_an386/memory.x"),
+    };
+    println!("cargo:rerun-if-changed={}", source.display());
+    std::fs::copy(&source, out_dir.join("memory.x"))
+        .unwrap_or_else(|error| fail(&format!("cannot copy {}: {error}", source.display())));
+    println!("cargo:rustc-link-search={}", out_dir.display());
+}
+
+/// The Rust type the tracer computes in. Others add their types here (and any microtrace
+/// feature they need in Cargo.toml).
+fn number_type(name: &str) -> &'static str {
+    match name {
+        "f64" => "f64",
+        "f32" => "f32",
+        // "fixed" => "microtrace::number::Fixed",        (to come)
+        // "f32-micromath" => "microtrace::number::...",  (to come)
+        other => fail(&format!("MICROTRACE_NUMBER={other}: expected f64 or f32")),
+    }
+}
+
+fn render_size(text: &str) -> (u16, u16) {
+    let parsed = text.split_once('x').and_then(|(w, h)| Some((w.parse().ok()?, h.parse().ok()?)));
+    match parsed {
+        Some((width, height)) if width > 0 && height > 0 => (width, height),
+        _ => fail(&format!("MICROTRACE_SIZE={text}: expected WIDTHxHEIGHT, e.g. 128x64")),
+    }
+}
+
+/// `None` keeps the scene's own `optimize` statement.
+fn optimization_override(text: Option<&str>) -> Option<Optimizations> {
+    let text = text?;
+    match text {
+        "scene" => None,
+        "all" => Some(Optimizations::ALL),
+        "none" => Some(Optimizations::NONE),
+        list => {
+            let mut optimizations = Optimizations::NONE;
+            for name in list.split(',') {
+                match name.trim() {
+                    "pixelbuffer" => optimizations.pixelbuffer = true,
+                    "extents" => optimizations.extents = true,
+                    "grid" => optimizations.grid = true,
+                    "sortlist" => optimizations.sortlist = true,
+                    other => fail(&format!(
+                        "MICROTRACE_OPT: unknown optimization `{other}` (expected all, none, or a list of pixelbuffer,extents,grid,sortlist)"
+                    )),
+                }
+            }
+            Some(optimizations)
+        }
+    }
+}
+
+/// The firmware models only the primitives its features enable; a scene that needs another
+/// must not build (it would otherwise fail at run time in `prepare`).
+fn check_primitives<const N: usize>(description: &SceneDescription<N>, scene_path: &Path) {
+    for primitive in Primitive::ALL {
+        let feature = format!("CARGO_FEATURE_{}", primitive.name().to_uppercase());
+        let enabled = env(&feature).is_some();
+        if let Some(object) = description.objects.iter().find(|object| object.primitive == primitive) {
+            if !enabled {
+                fail(&format!(
+                    "{}: line {}: the scene uses a {name} but the firmware was built without the `{name}` feature; \
+                     enable it (`cargo xtask firmware` picks the features from the scene)",
+                    scene_path.display(),
+                    object.line,
+                    name = primitive.name()
+                ));
+            }
+        }
+    }
+}
+
+/// `f64::from_bits(..)`: bit-exact, and const.
+fn float(value: f64) -> String {
+    format!("f64::from_bits({:#018x})", value.to_bits())
+}
+
+fn floats<const K: usize>(values: [f64; K]) -> String {
+    let items: Vec<String> = values.iter().map(|value| float(*value)).collect();
+    format!("[{}]", items.join(", "))
+}
+
+fn generate<const N: usize>(description: &SceneDescription<N>, scene_path: &Path, number: &str, board: Board) -> String {
+    let mut out = String::new();
+    let d = description;
+    let v = d.viewport;
+    let w = d.window;
+    let projection = match d.projection {
+        Projection::Parallel { direction } => format!("Projection::Parallel {{ direction: {} }}", floats(direction)),
+        Projection::Perspective { eye } => format!("Projection::Perspective {{ eye: {} }}", floats(eye)),
+    };
+    let light = match d.light {
+        Light::Point(position) => format!("Light::Point({})", floats(position)),
+        Light::Direction(direction) => format!("Light::Direction({})", floats(direction)),
+    };
+    let o = d.optimizations;
+    let palette: Vec<String> = d
+        .palette
+        .entries
+        .iter()
+        .map(|entry| format!("Rgb4::new({}, {}, {})", entry.r, entry.g, entry.b))
+        .collect();
+    let scene_name = scene_path.file_name().map(|name| name.to_string_lossy().into_owned()).unwrap_or_default();
+
+    writeln!(out, "// Generated by firmware/build.rs from {}: do not edit.", scene_path.display()).unwrap();
+    writeln!(out, "use microtrace::geometry::Matrix4;").unwrap();
+    writeln!(out, "use microtrace::scene::{{Light, Material, ObjectDescription, Optimizations, Primitive, Projection, SceneDescription, Viewport, Window}};").unwrap();
+    writeln!(out, "use microtrace::shading::{{Palette, Rgb4}};").unwrap();
+    writeln!(out, "/// The number type the tracer computes in (`MICROTRACE_NUMBER`).").unwrap();
+    writeln!(out, "pub type Number = {number};").unwrap();
+    writeln!(out, "pub const NUMBER_NAME: &str = {:?};", number).unwrap();
+    writeln!(out, "pub const BOARD_NAME: &str = {:?};", board.name()).unwrap();
+    writeln!(out, "pub const SCENE_NAME: &str = {:?};", scene_name).unwrap();
+    writeln!(out, "pub const WIDTH: u16 = {};", v.width()).unwrap();
+    writeln!(out, "pub const HEIGHT: u16 = {};", v.height()).unwrap();
+    writeln!(out, "pub const PIXEL_COUNT: usize = {};", v.pixel_count()).unwrap();
+    writeln!(out, "/// The scene's settings; its objects are in [`OBJECTS`].").unwrap();
+    writeln!(out, "pub static SCENE: SceneDescription<0> = SceneDescription {{").unwrap();
+    writeln!(out, "    viewport: Viewport {{ x1: {}, x2: {}, y1: {}, y2: {} }},", v.x1, v.x2, v.y1, v.y2).unwrap();
+    writeln!(out, "    window: Window {{ x1: {}, x2: {}, y1: {}, y2: {} }},", float(w.x1), float(w.x2), float(w.y1), float(w.y2)).unwrap();
+    writeln!(out, "    view_plane: {},", float(d.view_plane)).unwrap();
+    writeln!(out, "    projection: {projection},").unwrap();
+    writeln!(out, "    light: {light},").unwrap();
+    writeln!(out, "    ambient: {},", float(d.ambient)).unwrap();
+    writeln!(out, "    background: {},", d.background).unwrap();
+    writeln!(out, "    shadows: {},", d.shadows).unwrap();
+    writeln!(out, "    dither: {},", d.dither).unwrap();
+    writeln!(
+        out,
+        "    optimizations: Optimizations {{ pixelbuffer: {}, extents: {}, grid: {}, sortlist: {} }},",
+        o.pixelbuffer, o.extents, o.grid, o.sortlist
+    )
+    .unwrap();
+    writeln!(out, "    palette: Palette {{ entries: [{}] }},", palette.join(", ")).unwrap();
+    writeln!(out, "    objects: heapless::Vec::new(),").unwrap();
+    writeln!(out, "}};").unwrap();
+    writeln!(out, "pub const OBJECT_COUNT: usize = {};", d.objects.len()).unwrap();
+    writeln!(out, "pub static OBJECTS: [ObjectDescription; OBJECT_COUNT] = [").unwrap();
+    for object in &d.objects {
+        writeln!(out, "{},", object_source(object)).unwrap();
+    }
+    writeln!(out, "];").unwrap();
+    out
+}
+
+fn object_source(object: &ObjectDescription) -> String {
+    let primitive = match object.primitive {
+        Primitive::Cube => "Cube",
+        Primitive::Sphere => "Sphere",
+        Primitive::Cylinder => "Cylinder",
+        Primitive::Cone => "Cone",
+    };
+    let rows: Vec<String> = object.world_from_object.rows.iter().map(|row| floats(*row)).collect();
+    let m = &object.material;
+    format!(
+        "    ObjectDescription {{ primitive: Primitive::{primitive}, world_from_object: Matrix4 {{ rows: [{}] }}, \
+         material: Material {{ colour: {}, ka: {}, kd: {}, ks: {}, pwr: {}, rnd: {}, cmy: {} }}, line: {} }}",
+        rows.join(", "),
+        m.colour,
+        float(m.ka),
+        float(m.kd),
+        float(m.ks),
+        float(m.pwr),
+        float(m.rnd),
+        floats(m.cmy),
+        object.line
+    )
+}
+
+// TEMPORARY until the parser lands: one sphere.
+fn temporary_builtin() -> SceneDescription<PARSE_CAPACITY> {
+    let mut d = SceneDescription::default();
+    let mut o = ObjectDescription::new(Primitive::Sphere, 1);
+    o.world_from_object.scale([50.0, 50.0, 50.0]);
+    o.material.colour = 0;
+    d.objects.push(o).unwrap();
+    d.shadows = true;
+    d
+}

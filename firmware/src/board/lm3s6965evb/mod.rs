@@ -1,0 +1,44 @@
+//! Texas Instruments (Luminary Micro) EK-LM3S6965 evaluation board, QEMU machine `lm3s6965evb`:
+//! Cortex-M3, 256 KB flash, 64 KB RAM, and a 128x64 16-grey SSD0323 OLED on SSI0.
+
+mod registers;
+mod spi;
+mod ssd0323;
+
+pub use ssd0323::Ssd0323;
+
+use crate::semihosting;
+
+/// The display the render shows its rows on.
+pub type Display = Ssd0323;
+
+/// Brings up the OLED, cleared.
+pub fn init() -> Option<Display> {
+    let screen = cortex_m::singleton!(: ssd0323::ScreenCopy = [[0; 64]; ssd0323::HEIGHT])?;
+    Some(Ssd0323::new(spi::OledSpi::new(), screen))
+}
+
+/// Files that `cargo xtask firmware` uses to capture the screen before the firmware exits
+/// (the picture disappears with QEMU): xtask creates the first before starting QEMU, and the
+/// second once its monitor `screendump` has finished.
+const CAPTURE_WANTED: &[u8] = b"screendump.wanted\0";
+const CAPTURE_DONE: &[u8] = b"screendump.done\0";
+/// How often to look for `CAPTURE_DONE` before giving up (each look is a semihosting call and a
+/// short spin; xtask's timeout bounds the whole run anyway).
+const CAPTURE_POLLS: u32 = 2_000_000;
+
+/// Keeps the picture on the screen until the host has captured it, when a host asked for that.
+pub fn hold_picture_for_capture() -> bool {
+    if !semihosting::host_file_exists(CAPTURE_WANTED) {
+        return true;
+    }
+    semihosting::print("microtrace: waiting for screendump\n");
+    for _ in 0..CAPTURE_POLLS {
+        if semihosting::host_file_exists(CAPTURE_DONE) {
+            return true;
+        }
+        cortex_m::asm::delay(10_000);
+    }
+    semihosting::print("microtrace: no screendump came\n");
+    false
+}

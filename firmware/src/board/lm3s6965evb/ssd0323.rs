@@ -1,0 +1,106 @@
+//! The board's SSD0323 OLED controller as an embedded-graphics `DrawTarget<Color = Gray4>`.
+//! Drawing changes a 4-bit copy of the screen in RAM (4 KB) and marks rows dirty; `flush`
+//! sends the dirty rows over SPI. Pixel layout (qemu.md): two pixels per byte, high nibble =
+//! left pixel, 64 bytes per row; 128x64 shown.
+
+use core::convert::Infallible;
+
+use embedded_graphics::pixelcolor::{Gray4, GrayColor};
+use embedded_graphics::prelude::{DrawTarget, OriginDimensions, Size};
+use embedded_graphics::Pixel;
+
+use super::spi::OledSpi;
+use crate::display::FlushRows;
+
+pub const WIDTH: usize = 128;
+pub const HEIGHT: usize = 64;
+const BYTES_PER_ROW: usize = WIDTH / 2;
+
+/// The screen's contents, one nibble per pixel.
+pub type ScreenCopy = [[u8; BYTES_PER_ROW]; HEIGHT];
+
+/// Commands: set the column window (byte units) and the row window; data then auto-increments
+/// inside the window.
+const SET_COLUMN_WINDOW: u8 = 0x15;
+const SET_ROW_WINDOW: u8 = 0x75;
+
+/// Power-on set-up for the RIT P14201 panel of the EK-LM3S6965 (after TI's rit128x96x4 driver):
+/// display off, segment remap, start line, offset, normal display, multiplex 64 rows,
+/// phase length, row period, clock, display on. QEMU accepts and ignores all but on/off.
+const INITIALISATION: [u8; 21] = [
+    0xAE, // display off
+    0xA0, 0x52, // remap: column address and nibble order as the panel is wired
+    0xA1, 0x00, // start line 0
+    0xA2, 0x4C, // display offset
+    0xA4, // normal display
+    0xA8, 0x3F, // multiplex ratio: 64 rows
+    0xB1, 0x22, // phase length
+    0xB2, 0x46, // row period
+    0xB3, 0x91, // display clock
+    0xBC, 0x10, // pre-charge voltage
+    0xBE, 0x1C, // VCOMH
+    0xAF, // display on
+];
+
+pub struct Ssd0323 {
+    spi: OledSpi,
+    screen: &'static mut ScreenCopy,
+    /// Bit y set: row y differs from the controller's RAM.
+    dirty_rows: u64,
+}
+
+impl Ssd0323 {
+    /// Initialises the controller and clears the screen.
+    pub fn new(mut spi: OledSpi, screen: &'static mut ScreenCopy) -> Self {
+        spi.send_commands(&INITIALISATION);
+        for row in screen.iter_mut() {
+            row.fill(0);
+        }
+        let mut display = Self { spi, screen, dirty_rows: u64::MAX };
+        display.flush();
+        display
+    }
+
+    pub fn flush(&mut self) {
+        while self.dirty_rows != 0 {
+            let y = self.dirty_rows.trailing_zeros() as usize;
+            self.dirty_rows &= !(1u64 << y);
+            self.spi.send_commands(&[SET_COLUMN_WINDOW, 0, (BYTES_PER_ROW - 1) as u8, SET_ROW_WINDOW, y as u8, y as u8]);
+            self.spi.send_data(&self.screen[y]);
+        }
+    }
+}
+
+impl FlushRows for Ssd0323 {
+    fn flush(&mut self) {
+        Ssd0323::flush(self);
+    }
+}
+
+impl OriginDimensions for Ssd0323 {
+    fn size(&self) -> Size {
+        Size::new(WIDTH as u32, HEIGHT as u32)
+    }
+}
+
+impl DrawTarget for Ssd0323 {
+    type Color = Gray4;
+    type Error = Infallible;
+
+    fn draw_iter<I>(&mut self, pixels: I) -> Result<(), Self::Error>
+    where
+        I: IntoIterator<Item = Pixel<Self::Color>>,
+    {
+        for Pixel(point, colour) in pixels {
+            let (Ok(x), Ok(y)) = (usize::try_from(point.x), usize::try_from(point.y)) else { continue };
+            if x >= WIDTH || y >= HEIGHT {
+                continue;
+            }
+            let byte = &mut self.screen[y][x / 2];
+            let level = colour.luma() & 0x0F;
+            *byte = if x % 2 == 0 { (*byte & 0x0F) | (level << 4) } else { (*byte & 0xF0) | level };
+            self.dirty_rows |= 1u64 << y;
+        }
+        Ok(())
+    }
+}

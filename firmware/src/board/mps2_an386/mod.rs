@@ -1,0 +1,16 @@
+//! ARM MPS2 FPGA board with the AN386 image, QEMU machine `mps2-an386`: Cortex-M4F with a
+//! single-precision FPU (cortex-m-rt enables it before `main`). No display: the picture goes
+//! to the host as `framebuffer.bin` only. The memory layout (memory.x beside this file) uses
+//! 256 KB of code and 64 KB of RAM of QEMU's 4 MB + 4 MB, to stand for a small part.
+
+/// No display on this board; the type is there so the shared code has one to name.
+pub type Display = crate::display::NoDisplay;
+
+pub fn init() -> Option<Display> {
+    None
+}
+
+/// Nothing to capture.
+pub fn hold_picture_for_capture() -> bool {
+    true
+}

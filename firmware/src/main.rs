@@ -1,0 +1,115 @@
+//! MicroTrace firmware: renders the scene chosen at build time (firmware/build.rs) on a
+//! Cortex-M, shows it on the board's display if it has one, and reports to the host by
+//! semihosting: `framebuffer.bin` (palette indices, rows top first, as the data of an
+//! uncompressed PGA file) and `report.txt` (statistics, peak stack). The instruction count is
+//! taken by a QEMU plugin between the two markers in `measurement`.
+#![no_std]
+#![no_main]
+
+mod board;
+mod decimal;
+mod display;
+mod measurement;
+mod report;
+mod semihosting;
+mod stack;
+
+/// The scene, generated from the `.mts` file by build.rs.
+mod scene {
+    include!(concat!(env!("OUT_DIR"), "/scene.rs"));
+}
+
+use cortex_m_rt::{entry, exception, ExceptionFrame};
+use embedded_graphics::prelude::Point;
+use microtrace::pixel::{FrameBuffer, GreyDrawTargetSink};
+use microtrace::render::{render_pga, Statistics};
+use microtrace::scene::Scene;
+
+use decimal::Decimal;
+use display::FramebufferAndDisplay;
+use semihosting::{print, HostFile};
+
+#[entry]
+fn main() -> ! {
+    let display = board::init();
+    let Some(pixels) = cortex_m::singleton!(: [u8; scene::PIXEL_COUNT] = [0; scene::PIXEL_COUNT]) else {
+        fail("framebuffer taken twice")
+    };
+
+    let scene = match Scene::<scene::Number, { scene::OBJECT_COUNT }>::prepare_with_objects(&scene::SCENE, &scene::OBJECTS) {
+        Ok(scene) => scene,
+        Err(error) => {
+            print("microtrace: the scene does not prepare, line ");
+            print(Decimal::new(error.line as u64).as_str());
+            fail("")
+        }
+    };
+
+    let Some(framebuffer) = FrameBuffer::new(pixels, scene::WIDTH, scene::HEIGHT) else { fail("framebuffer size") };
+    let mut sink = FramebufferAndDisplay {
+        framebuffer,
+        display: display.map(|target| GreyDrawTargetSink { target, palette: &scene.palette, offset: Point::zero() }),
+    };
+    let mut statistics = Statistics::default();
+
+    measurement::microtrace_measure_start();
+    render_pga(&scene, &mut sink, &mut statistics);
+    measurement::microtrace_measure_end();
+
+    let (stack_peak_bytes, stack_size_bytes) = stack::peak_and_size();
+
+    let Some(mut file) = HostFile::create(b"framebuffer.bin\0") else { fail("cannot create framebuffer.bin") };
+    if !file.write_all(sink.framebuffer.pixels()) {
+        fail("cannot write framebuffer.bin");
+    }
+    drop(file);
+
+    let mut report = report::Report::new();
+    report.name("board", scene::BOARD_NAME);
+    report.name("scene", scene::SCENE_NAME);
+    report.name("number", scene::NUMBER_NAME);
+    report.integer("width", scene::WIDTH as u64);
+    report.integer("height", scene::HEIGHT as u64);
+    report.integer("objects", scene::OBJECT_COUNT as u64);
+    report.statistics(&statistics);
+    report.integer("stack_peak_bytes", stack_peak_bytes as u64);
+    report.integer("stack_size_bytes", stack_size_bytes as u64);
+    let Some(mut file) = HostFile::create(b"report.txt\0") else { fail("cannot create report.txt") };
+    if !file.write_all(report.as_bytes()) {
+        fail("cannot write report.txt");
+    }
+    drop(file);
+
+    print("microtrace: done\n");
+    let captured = board::hold_picture_for_capture();
+    semihosting::exit(captured)
+}
+
+/// Reports `why` and ends the run with failure.
+fn fail(why: &str) -> ! {
+    print("microtrace: failed: ");
+    print(why);
+    print("\n");
+    semihosting::exit(false)
+}
+
+/// Panics end the run with failure, naming the place (no message: formatting it would pull in
+/// `core::fmt`'s float and padding code).
+#[panic_handler]
+fn panic(info: &core::panic::PanicInfo) -> ! {
+    print("microtrace: panic");
+    if let Some(location) = info.location() {
+        print(" at ");
+        print(location.file());
+        print(":");
+        print(Decimal::new(location.line() as u64).as_str());
+    }
+    print("\n");
+    semihosting::exit(false)
+}
+
+#[exception]
+unsafe fn HardFault(_frame: &ExceptionFrame) -> ! {
+    print("microtrace: hard fault\n");
+    semihosting::exit(false)
+}
