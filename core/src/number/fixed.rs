@@ -116,7 +116,8 @@ fn div_q32(a: i64, b: i64) -> Option<i64> {
 }
 
 /// `√(raw·2⁻³²)` in Q32.32 raw bits, for `raw > 0`: `isqrt(raw·2³²)` through a 64-bit integer
-/// square root of the normalised value (exact for values below 1, within 2⁻³¹ relative above).
+/// square root of the normalised value, rounded to nearest (exact to ½ LSB for values below 1,
+/// within 2⁻³² relative above).
 #[inline]
 fn sqrt_q32(raw: i64) -> i64 {
     if raw <= 0 {
@@ -124,12 +125,14 @@ fn sqrt_q32(raw: i64) -> i64 {
     }
     let x = raw as u64;
     let shift = x.leading_zeros() & !1; // even, so the root shifts by whole bits
-    if shift >= 32 {
-        (x << 32).isqrt() as i64
-    } else {
-        // √(x·2^32) = √(x·2^shift)·2^((32 − shift)/2); the root is < 2^32, the result < 2^48.
-        ((x << shift).isqrt() << ((32 - shift) / 2)) as i64
-    }
+    // √(x·2^32) = √(x·2^s)·2^((32 − s)/2), with s = 32 when x < 2^32 (exact), otherwise the
+    // normalising shift (the root of the normalised value has 32 significant bits).
+    let s = shift.min(32);
+    let n = x << s;
+    let r = n.isqrt(); // < 2^32
+    // Round: r + ½ ≤ √n  ⟺  n ≥ r² + r + ¼  ⟺  n > r² + r (integers). r² + r < 2^64.
+    let rounded = r + u64::from(n - r * r > r);
+    (rounded << ((32 - s) / 2)) as i64
 }
 
 impl fmt::Debug for Fixed {
