@@ -351,3 +351,163 @@ fn ray_sphere_accuracy_benchmark() {
     #[cfg(feature = "micromath")]
     sphere_row::<F32Micro>();
 }
+
+// ---------------------------------------------------------------------------------------------
+// Whole thesis scenes against f64
+// ---------------------------------------------------------------------------------------------
+
+use microtrace::pixel::FrameBuffer;
+use microtrace::render::{render_pga, Statistics};
+use microtrace::scene::{Scene, SceneDescription};
+
+const MAX_OBJECTS: usize = 512;
+
+const SCENES: [(&str, &[u8]); 2] =
+    [("snooker", include_bytes!("../../scenes/snooker.mts")), ("lattice", include_bytes!("../../scenes/lattice.mts"))];
+
+/// The scene through the real parser; until the parser lands, through a minimal reader of the
+/// statements the two thesis scenes use.
+fn description(text: &[u8]) -> Box<SceneDescription<MAX_OBJECTS>> {
+    match microtrace::parser::parse::<MAX_OBJECTS>(text) {
+        Ok(description) => Box::new(description),
+        Err(_) => minimal_reader(core::str::from_utf8(text).unwrap()),
+    }
+}
+
+fn minimal_reader(text: &str) -> Box<SceneDescription<MAX_OBJECTS>> {
+    use microtrace::scene::{Light, ObjectDescription, Primitive, Projection, Viewport, Window};
+    use microtrace::shading::Rgb4;
+    let mut scene = Box::<SceneDescription<MAX_OBJECTS>>::default();
+    for (index, line) in text.lines().enumerate() {
+        let words: Vec<&str> = line.split('#').next().unwrap().split_whitespace().collect();
+        let Some((&keyword, arguments)) = words.split_first() else { continue };
+        let f = |i: usize| arguments[i].parse::<f64>().unwrap();
+        let object = scene.objects.last_mut();
+        match keyword {
+            "viewport" => scene.viewport = Viewport { x1: f(0) as u16, x2: f(1) as u16, y1: f(2) as u16, y2: f(3) as u16 },
+            "window" => scene.window = Window { x1: f(0), x2: f(1), y1: f(2), y2: f(3) },
+            "viewplane" => scene.view_plane = f(0),
+            "perspective" => scene.projection = Projection::Perspective { eye: [f(0), f(1), f(2)] },
+            "light" if arguments[0] == "point" => scene.light = Light::Point([f(1), f(2), f(3)]),
+            "ambient" => scene.ambient = f(0),
+            "shadows" => scene.shadows = arguments[0] == "on",
+            "dither" => scene.dither = arguments[0] == "on",
+            "background" => scene.background = f(0) as u8,
+            "group" => {
+                let cell = Rgb4::new(f(1) as u8, f(2) as u8, f(3) as u8);
+                if arguments[4] == "up" { scene.palette.set_group_up(f(0) as u8, cell) } else { scene.palette.set_group_down(f(0) as u8, cell) }
+            }
+            "sphere" | "cylinder" | "cube" | "cone" => {
+                let primitive = Primitive::ALL.into_iter().find(|p| p.name() == keyword).unwrap();
+                scene.objects.push(ObjectDescription::new(primitive, index as u32 + 1)).unwrap();
+            }
+            "scale" => object.unwrap().world_from_object.scale([f(0), f(1), f(2)]),
+            "translate" => object.unwrap().world_from_object.translate([f(0), f(1), f(2)]),
+            "rotate" => object.unwrap().world_from_object.rotate("xyz".find(arguments[0]).unwrap(), f(1)),
+            "colour" => object.unwrap().material.colour = f(0) as u8,
+            "ka" => object.unwrap().material.ka = f(0),
+            "kd" => object.unwrap().material.kd = f(0),
+            "ks" => object.unwrap().material.ks = f(0),
+            "pwr" => object.unwrap().material.pwr = f(0),
+            "rnd" => object.unwrap().material.rnd = f(0),
+            other => panic!("line {}: the minimal reader does not know {other}", index + 1),
+        }
+    }
+    scene
+}
+
+fn render<N: Number>(description: &SceneDescription<MAX_OBJECTS>) -> Vec<u8> {
+    let scene = Scene::<N, MAX_OBJECTS>::prepare(description).unwrap();
+    let (width, height) = (scene.viewport().width(), scene.viewport().height());
+    let mut pixels = vec![0u8; usize::from(width) * usize::from(height)];
+    let mut frame = FrameBuffer::new(&mut pixels, width, height).unwrap();
+    render_pga(&scene, &mut frame, &mut Statistics::default());
+    pixels
+}
+
+/// How an image differs from the reference: identical pixels, pixels one shade step away in the
+/// same colour group, and worse ones (a different group, i.e. a different object or the
+/// background, or more than one step).
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Comparison {
+    pixels: usize,
+    identical: usize,
+    one_step: usize,
+    worse: usize,
+    max_shade_difference: u8,
+}
+
+impl Comparison {
+    fn of(reference: &[u8], image: &[u8]) -> Self {
+        let mut comparison = Self { pixels: reference.len(), identical: 0, one_step: 0, worse: 0, max_shade_difference: 0 };
+        for (&a, &b) in reference.iter().zip(image) {
+            if a == b {
+                comparison.identical += 1;
+            } else if a / 16 == b / 16 && (a % 16).abs_diff(b % 16) == 1 {
+                comparison.one_step += 1;
+                comparison.max_shade_difference = comparison.max_shade_difference.max(1);
+            } else {
+                comparison.worse += 1;
+                let difference = if a / 16 == b / 16 { (a % 16).abs_diff(b % 16) } else { 16 };
+                comparison.max_shade_difference = comparison.max_shade_difference.max(difference);
+            }
+        }
+        comparison
+    }
+
+    fn identical_fraction(&self) -> f64 {
+        self.identical as f64 / self.pixels as f64
+    }
+}
+
+fn compare<N: Number>(name: &str, description: &SceneDescription<MAX_OBJECTS>, reference: &[u8]) -> Comparison {
+    let start = std::time::Instant::now();
+    let comparison = Comparison::of(reference, &render::<N>(description));
+    println!(
+        "{name:>8} {:>4}x{:<4} {:>14}: {:>8.4}% identical, {:>6} one step, {:>5} worse (max shade difference {:>2}; 16 = other group) [{:.2?} on the host]",
+        description.viewport.width(),
+        description.viewport.height(),
+        N::NAME,
+        100.0 * comparison.identical_fraction(),
+        comparison.one_step,
+        comparison.worse,
+        comparison.max_shade_difference,
+        start.elapsed()
+    );
+    comparison
+}
+
+fn compare_scenes(width: u16, height: u16) {
+    for (name, text) in SCENES {
+        let mut description = description(text);
+        if (width, height) != (0, 0) {
+            description.fit_to_size(width, height);
+        }
+        let reference = render::<f64>(&description);
+        let objects = reference.iter().filter(|&&index| index != description.background).count();
+        println!("{name:>8}: f64 reference, {:.1}% of the pixels show an object", 100.0 * objects as f64 / reference.len() as f64);
+        assert!(objects > reference.len() / 20, "{name}: the reference is nearly empty");
+        compare::<f32>(name, &description, &reference);
+        #[cfg(feature = "fixed-point")]
+        {
+            let fixed = compare::<Fixed>(name, &description, &reference);
+            assert!(fixed.identical_fraction() >= 0.995, "{name}: {fixed:?}");
+            assert_eq!(fixed.worse, 0, "{name}: {fixed:?}");
+            compare::<Fixed16>(name, &description, &reference);
+        }
+        #[cfg(feature = "micromath")]
+        compare::<F32Micro>(name, &description, &reference);
+    }
+}
+
+/// The thesis scenes at the OLED's 128x64 in every type against f64.
+#[test]
+fn thesis_scenes_at_128x64_match_f64() {
+    compare_scenes(128, 64);
+}
+
+/// The thesis scenes at their own sizes (528x480 and 466x480).
+#[test]
+fn thesis_scenes_at_full_size_match_f64() {
+    compare_scenes(0, 0);
+}
