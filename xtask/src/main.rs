@@ -1,1 +1,74 @@
-fn main() { eprintln!("xtask: nothing here yet"); std::process::exit(2); }
+//! `cargo xtask <task>`: see `usage()`.
+
+use std::path::PathBuf;
+use std::time::Duration;
+
+use xtask::firmware::{self, Board, FirmwareOptions};
+
+fn usage() -> &'static str {
+    "usage:
+  cargo xtask firmware [--scene FILE] [--board lm3s6965evb|mps2-an386] [--number f64|f32]
+                       [--opt scene|all|none|pixelbuffer,extents,grid,sortlist] [--out DIR]
+                       [--timeout SECONDS]
+      Builds the firmware for the scene (default scenes/snooker.mts), runs it under QEMU and
+      leaves framebuffer.bin, oled.png (lm3s6965evb) and report.json in DIR
+      (default firmware/target/run/BOARD-SCENE-NUMBER).
+  cargo xtask firmware-example
+      Builds (does not run) the real-board example in firmware/examples/."
+}
+
+fn main() {
+    let arguments: Vec<String> = std::env::args().skip(1).collect();
+    let result = match arguments.first().map(String::as_str) {
+        Some("firmware") => firmware_task(&arguments[1..]),
+        Some("firmware-example") => xtask::example::build().map(|path| println!("built {}", path.display())),
+        _ => Err(usage().to_owned()),
+    };
+    if let Err(message) = result {
+        eprintln!("xtask: {message}");
+        std::process::exit(1);
+    }
+}
+
+fn firmware_task(arguments: &[String]) -> Result<(), String> {
+    let root = xtask::repository_root();
+    let mut scene = root.join("scenes/snooker.mts");
+    let mut board = Board::Lm3s6965evb;
+    let mut number = "f32".to_owned();
+    let mut optimizations = "scene".to_owned();
+    let mut out: Option<PathBuf> = None;
+    let mut timeout = Duration::from_secs(300);
+    let mut rest = arguments.iter();
+    while let Some(flag) = rest.next() {
+        let mut value = || rest.next().cloned().ok_or_else(|| format!("{flag} needs a value\n{}", usage()));
+        match flag.as_str() {
+            "--scene" => scene = PathBuf::from(value()?),
+            "--board" => {
+                let name = value()?;
+                board = Board::from_name(&name).ok_or_else(|| format!("unknown board `{name}` (lm3s6965evb or mps2-an386)"))?;
+            }
+            "--number" => number = value()?,
+            "--opt" => optimizations = value()?,
+            "--out" => out = Some(PathBuf::from(value()?)),
+            "--timeout" => {
+                let seconds = value()?;
+                timeout = Duration::from_secs(seconds.parse().map_err(|_| format!("--timeout {seconds}: not a number of seconds"))?);
+            }
+            "-h" | "--help" => {
+                println!("{}", usage());
+                return Ok(());
+            }
+            other => return Err(format!("unknown argument `{other}`\n{}", usage())),
+        }
+    }
+    let out = out.unwrap_or_else(|| {
+        let stem = scene.file_stem().map(|stem| stem.to_string_lossy().into_owned()).unwrap_or_default();
+        xtask::firmware_dir().join("target/run").join(format!("{}-{stem}-{number}", board.name()))
+    });
+    let mut options = FirmwareOptions::new(scene, board, &number, out);
+    options.optimizations = optimizations;
+    options.timeout = timeout;
+    let run = firmware::run(&options)?;
+    println!("{}", firmware::summary(&run, &options));
+    Ok(())
+}

@@ -1,0 +1,302 @@
+//! `cargo xtask firmware`: build the firmware for one scene, board and number type, run it
+//! under QEMU, and leave `framebuffer.bin`, `oled.png` (lm3s6965evb) and `report.json` in the
+//! output directory.
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::sync::Mutex;
+use std::time::Duration;
+
+use microtrace::scene::Primitive;
+
+use crate::elf;
+use crate::oled;
+use crate::qemu::{self, Machine, Monitor, QemuRun};
+use crate::setup;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Board {
+    Lm3s6965evb,
+    Mps2An386,
+}
+
+impl Board {
+    pub const ALL: [Board; 2] = [Board::Lm3s6965evb, Board::Mps2An386];
+
+    /// The name on the command line, and the firmware's cargo feature.
+    pub fn name(self) -> &'static str {
+        match self {
+            Board::Lm3s6965evb => "lm3s6965evb",
+            Board::Mps2An386 => "mps2-an386",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|board| board.name() == name)
+    }
+
+    pub fn rust_target(self) -> &'static str {
+        match self {
+            Board::Lm3s6965evb => "thumbv7m-none-eabi",
+            Board::Mps2An386 => "thumbv7em-none-eabihf",
+        }
+    }
+
+    fn machine(self) -> Machine {
+        match self {
+            Board::Lm3s6965evb => Machine { name: "lm3s6965evb", cpu: "cortex-m3" },
+            Board::Mps2An386 => Machine { name: "mps2-an386", cpu: "cortex-m4" },
+        }
+    }
+
+    pub fn has_display(self) -> bool {
+        matches!(self, Board::Lm3s6965evb)
+    }
+}
+
+#[derive(Clone, Debug)]
+pub struct FirmwareOptions {
+    pub scene: PathBuf,
+    /// `f64` or `f32` (firmware/build.rs lists the number types).
+    pub number: String,
+    pub board: Board,
+    /// `scene` (keep the scene's `optimize`), `all`, `none`, or a comma list.
+    pub optimizations: String,
+    pub out: PathBuf,
+    pub timeout: Duration,
+}
+
+impl FirmwareOptions {
+    pub fn new(scene: impl Into<PathBuf>, board: Board, number: &str, out: impl Into<PathBuf>) -> Self {
+        Self {
+            scene: scene.into(),
+            number: number.to_owned(),
+            board,
+            optimizations: "scene".to_owned(),
+            out: out.into(),
+            timeout: Duration::from_secs(300),
+        }
+    }
+}
+
+/// What one run left in the output directory.
+#[derive(Clone, Debug)]
+pub struct FirmwareRun {
+    pub elf: PathBuf,
+    pub framebuffer: PathBuf,
+    pub oled_png: Option<PathBuf>,
+    pub report_json: PathBuf,
+    /// Every integer of the report, by key (`instructions`, `pixels`, `flash_bytes`, ...).
+    pub numbers: BTreeMap<String, u64>,
+}
+
+/// Firmware builds share one cargo target directory: a build and the copy of its ELF happen
+/// under this lock so that concurrent runs (the tests) never run each other's firmware.
+static BUILD_LOCK: Mutex<()> = Mutex::new(());
+
+pub fn run(options: &FirmwareOptions) -> Result<FirmwareRun, String> {
+    let scene = options
+        .scene
+        .canonicalize()
+        .map_err(|error| format!("scene {}: {error}", options.scene.display()))?;
+    let features = primitive_features(&scene)?;
+    setup::ensure_tools(options.board.rust_target())?;
+
+    std::fs::create_dir_all(&options.out).map_err(|error| format!("{}: {error}", options.out.display()))?;
+    let out = options.out.canonicalize().map_err(|error| format!("{}: {error}", options.out.display()))?;
+    for stale in ["framebuffer.bin", "report.txt", "report.json", "oled.png", "oled.ppm", "instructions.txt", "screendump.wanted", "screendump.done"] {
+        let _ = std::fs::remove_file(out.join(stale));
+    }
+
+    let elf_path = out.join("firmware.elf");
+    {
+        let _guard = BUILD_LOCK.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
+        let built = build(options, &scene, &features)?;
+        std::fs::copy(&built, &elf_path).map_err(|error| format!("copying {}: {error}", built.display()))?;
+    }
+    let elf_bytes = std::fs::read(&elf_path).map_err(|error| format!("{}: {error}", elf_path.display()))?;
+    let footprint = elf::footprint(&elf_bytes)?;
+    let start = elf::function_address(&elf_bytes, "microtrace_measure_start")?;
+    let end = elf::function_address(&elf_bytes, "microtrace_measure_end")?;
+
+    let plugin = qemu::instruction_count_plugin(&crate::firmware_dir().join("target/qemu-plugin"))?;
+    let instructions_path = out.join("instructions.txt");
+    let plugin_arguments = format!("{},start={start:#x},end={end:#x},out={}", plugin.display(), instructions_path.display());
+    run_qemu(options, &elf_path, &out, &plugin_arguments)?;
+
+    let mut numbers = read_key_values(&out.join("report.txt"))?;
+    let instructions = read_key_values(&instructions_path)
+        .map_err(|error| format!("no instruction count (did the render reach its end marker?): {error}"))?;
+    numbers.extend(instructions);
+    let mut integers: BTreeMap<String, u64> = numbers.iter().filter_map(|(key, value)| Some((key.clone(), value.parse().ok()?))).collect();
+    integers.insert("flash_bytes".into(), footprint.flash_bytes());
+    integers.insert("static_ram_bytes".into(), footprint.static_ram_bytes());
+    integers.insert("text_bytes".into(), footprint.text);
+    integers.insert("data_bytes".into(), footprint.data);
+    integers.insert("bss_bytes".into(), footprint.bss);
+    for key in ["instructions", "pixels", "stack_peak_bytes"] {
+        if !integers.contains_key(key) {
+            return Err(format!("the firmware's report lacks `{key}`"));
+        }
+    }
+    let pixels = integers["pixels"].max(1);
+    integers.insert("instructions_per_pixel".into(), integers["instructions"] / pixels);
+
+    let mut names = BTreeMap::new();
+    names.insert("board", options.board.name().to_owned());
+    names.insert("number", options.number.clone());
+    names.insert("scene", scene.file_name().map(|name| name.to_string_lossy().into_owned()).unwrap_or_default());
+    names.insert("optimizations", options.optimizations.clone());
+    let report_json = out.join("report.json");
+    std::fs::write(&report_json, json(&names, &integers)).map_err(|error| format!("{}: {error}", report_json.display()))?;
+    let _ = std::fs::remove_file(out.join("report.txt"));
+    let _ = std::fs::remove_file(&instructions_path);
+
+    let framebuffer = out.join("framebuffer.bin");
+    let oled_png = options.board.has_display().then(|| out.join("oled.png"));
+    Ok(FirmwareRun { elf: elf_path, framebuffer, oled_png, report_json, numbers: integers })
+}
+
+/// The `cube`/`sphere`/`cylinder`/`cone` features the scene needs (the firmware models only
+/// those), parsing it with the same parser as the firmware's build script.
+fn primitive_features(scene: &Path) -> Result<Vec<&'static str>, String> {
+    let text = std::fs::read(scene).map_err(|error| format!("scene {}: {error}", scene.display()))?;
+    // TEMPORARY until the parser lands.
+    if std::env::var_os("MICROTRACE_TEMPORARY_BUILTIN").is_some() {
+        return Ok(vec!["sphere"]);
+    }
+    let description = microtrace::parser::parse::<1024>(&text).map_err(|error| format!("{}: {error}", scene.display()))?;
+    Ok(Primitive::ALL
+        .into_iter()
+        .filter(|primitive| description.objects.iter().any(|object| object.primitive == *primitive))
+        .map(Primitive::name)
+        .collect())
+}
+
+/// `cargo build --release` of the firmware; returns the ELF.
+fn build(options: &FirmwareOptions, scene: &Path, primitive_features: &[&str]) -> Result<PathBuf, String> {
+    let firmware = crate::firmware_dir();
+    let target_dir = firmware.join("target");
+    let mut features = vec![options.board.name()];
+    features.extend_from_slice(primitive_features);
+    let output = Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
+        .args(["build", "--release", "--quiet", "--no-default-features"])
+        .args(["--features", &features.join(",")])
+        .args(["--target", options.board.rust_target()])
+        .arg("--target-dir")
+        .arg(&target_dir)
+        .current_dir(&firmware)
+        // The caller's build settings are not the firmware's (its rustflags add link.x).
+        .env_remove("CARGO_TARGET_DIR")
+        .env_remove("CARGO_BUILD_TARGET")
+        .env_remove("RUSTFLAGS")
+        .env_remove("CARGO_ENCODED_RUSTFLAGS")
+        .env("MICROTRACE_SCENE", scene)
+        .env("MICROTRACE_NUMBER", &options.number)
+        .env("MICROTRACE_OPT", &options.optimizations)
+        .env("MICROTRACE_SIZE", "128x64")
+        .stdin(Stdio::null())
+        .output()
+        .map_err(|error| format!("cannot run cargo: {error}"))?;
+    if !output.status.success() {
+        return Err(format!("building the firmware failed:\n{}", String::from_utf8_lossy(&output.stderr)));
+    }
+    Ok(target_dir.join(options.board.rust_target()).join("release/microtrace-firmware"))
+}
+
+fn run_qemu(options: &FirmwareOptions, elf: &Path, out: &Path, plugin_arguments: &str) -> Result<(), String> {
+    let machine = options.board.machine();
+    if !options.board.has_display() {
+        let mut run = QemuRun::start(machine, elf, out, plugin_arguments, None, options.timeout)?;
+        let status = run.wait()?;
+        if !status.success() {
+            return Err(format!("the firmware failed ({status}); QEMU's output:\n{}", run.output()));
+        }
+        return Ok(());
+    }
+
+    // With a display: the firmware holds its picture until we have taken the screendump
+    // (board/lm3s6965evb/mod.rs); a socket path must be short, so it lives in the temp dir.
+    touch(&out.join("screendump.wanted"))?;
+    let socket = std::env::temp_dir().join(format!("microtrace-monitor-{}-{}.sock", std::process::id(), unique()));
+    let _ = std::fs::remove_file(&socket);
+    let result = (|| {
+        let mut run = QemuRun::start(machine, elf, out, plugin_arguments, Some(&socket), options.timeout)?;
+        run.wait_for_output("microtrace: waiting for screendump")?;
+        let mut monitor = Monitor::connect(&socket, Duration::from_secs(10))?;
+        let answer = monitor.command("screendump oled.ppm")?;
+        let ppm_path = out.join("oled.ppm");
+        let ppm = std::fs::read(&ppm_path).map_err(|error| format!("screendump gave no picture ({error}); the monitor said: {answer}"))?;
+        touch(&out.join("screendump.done"))?;
+        let status = run.wait()?;
+        if !status.success() {
+            return Err(format!("the firmware failed ({status}); QEMU's output:\n{}", run.output()));
+        }
+        let image = oled::downsample_screendump(&ppm)?;
+        oled::write_png(&out.join("oled.png"), &image)?;
+        let _ = std::fs::remove_file(&ppm_path);
+        Ok(())
+    })();
+    let _ = std::fs::remove_file(&socket);
+    let _ = std::fs::remove_file(out.join("screendump.wanted"));
+    let _ = std::fs::remove_file(out.join("screendump.done"));
+    result
+}
+
+fn unique() -> u64 {
+    use std::sync::atomic::{AtomicU64, Ordering};
+    static NEXT: AtomicU64 = AtomicU64::new(0);
+    NEXT.fetch_add(1, Ordering::Relaxed)
+}
+
+fn touch(path: &Path) -> Result<(), String> {
+    std::fs::write(path, b"").map_err(|error| format!("{}: {error}", path.display()))
+}
+
+fn read_key_values(path: &Path) -> Result<BTreeMap<String, String>, String> {
+    let text = std::fs::read_to_string(path).map_err(|error| format!("{}: {error}", path.display()))?;
+    Ok(text
+        .lines()
+        .filter_map(|line| line.split_once('='))
+        .map(|(key, value)| (key.trim().to_owned(), value.trim().to_owned()))
+        .collect())
+}
+
+/// A flat JSON object: the names as strings, then the integers.
+fn json(names: &BTreeMap<&str, String>, integers: &BTreeMap<String, u64>) -> String {
+    let escape = |text: &str| text.replace('\\', "\\\\").replace('"', "\\\"");
+    let mut fields: Vec<String> = names.iter().map(|(key, value)| format!("  \"{key}\": \"{}\"", escape(value))).collect();
+    fields.extend(integers.iter().map(|(key, value)| format!("  \"{key}\": {value}")));
+    format!("{{\n{}\n}}\n", fields.join(",\n"))
+}
+
+/// A few lines for the terminal.
+pub fn summary(run: &FirmwareRun, options: &FirmwareOptions) -> String {
+    let get = |key: &str| run.numbers.get(key).copied().unwrap_or(0);
+    let mut text = format!(
+        "{} on {} ({}): {} pixels, {} instructions ({} per pixel; instructions, not cycles)\n",
+        options.scene.display(),
+        options.board.name(),
+        options.number,
+        get("pixels"),
+        get("instructions"),
+        get("instructions_per_pixel"),
+    );
+    text += &format!(
+        "flash {} bytes, static RAM {} bytes, peak stack {} bytes\n",
+        get("flash_bytes"),
+        get("static_ram_bytes"),
+        get("stack_peak_bytes")
+    );
+    text += &format!(
+        "rays traced {}, intersected {}, ray-object tests {}, shadow rays {}, shadow tests {}\n",
+        get("rays_traced"),
+        get("rays_intersected"),
+        get("ro_tests"),
+        get("shadow_rays"),
+        get("shadow_tests")
+    );
+    text += &format!("wrote {}", options.out.display());
+    text
+}

@@ -1,0 +1,23 @@
+//! Project tasks, as a library so that the integration tests can drive them too:
+//! - [`firmware::run`]: build the firmware for a scene, run it under QEMU, collect
+//!   `framebuffer.bin`, `oled.png` and `report.json` (`cargo xtask firmware`);
+//! - [`example::build`]: build the real-board example (`cargo xtask firmware-example`).
+
+pub mod elf;
+pub mod example;
+pub mod firmware;
+pub mod oled;
+pub mod qemu;
+pub mod setup;
+
+use std::path::{Path, PathBuf};
+
+/// The repository root (xtask lives one level below it).
+pub fn repository_root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).parent().expect("xtask has a parent directory").to_path_buf()
+}
+
+/// The firmware's own cargo workspace.
+pub fn firmware_dir() -> PathBuf {
+    repository_root().join("firmware")
+}

@@ -1,0 +1,76 @@
+//! Installs what the firmware tasks need when it is missing (CI machines start bare): the rust
+//! target of the board, QEMU and gcc (for the instruction-count plugin). Runs once per process.
+
+use std::process::{Command, Stdio};
+use std::sync::Mutex;
+
+static DONE_FOR_TARGETS: Mutex<Vec<String>> = Mutex::new(Vec::new());
+
+pub fn ensure_tools(rust_target: &str) -> Result<(), String> {
+    let mut done = DONE_FOR_TARGETS.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
+    if done.iter().any(|target| target == rust_target) {
+        return Ok(());
+    }
+    ensure_rust_target(rust_target)?;
+    let mut missing = Vec::new();
+    if !on_path("qemu-system-arm") {
+        missing.push("qemu-system-arm");
+    }
+    if !on_path("gcc") {
+        missing.push("gcc");
+    }
+    if !missing.is_empty() {
+        apt_install(&missing)?;
+    }
+    done.push(rust_target.to_owned());
+    Ok(())
+}
+
+pub fn on_path(program: &str) -> bool {
+    Command::new("sh")
+        .args(["-c", &format!("command -v {program}")])
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .status()
+        .is_ok_and(|status| status.success())
+}
+
+fn ensure_rust_target(target: &str) -> Result<(), String> {
+    let installed = Command::new("rustup")
+        .args(["target", "list", "--installed"])
+        .output()
+        .map_err(|error| format!("cannot run rustup: {error}"))?;
+    if String::from_utf8_lossy(&installed.stdout).lines().any(|line| line.trim() == target) {
+        return Ok(());
+    }
+    eprintln!("xtask: rustup target add {target}");
+    let status = Command::new("rustup")
+        .args(["target", "add", target])
+        .stdin(Stdio::null())
+        .status()
+        .map_err(|error| format!("cannot run rustup: {error}"))?;
+    if !status.success() {
+        return Err(format!("`rustup target add {target}` failed"));
+    }
+    Ok(())
+}
+
+/// `apt-get install` as root (CI is root), or through sudo otherwise.
+fn apt_install(packages: &[&str]) -> Result<(), String> {
+    eprintln!("xtask: installing {}", packages.join(" "));
+    let is_root = Command::new("id").arg("-u").output().is_ok_and(|output| output.stdout.starts_with(b"0"));
+    let prefix = if is_root { "" } else { "sudo " };
+    let script = format!(
+        "{prefix}apt-get update -qq && DEBIAN_FRONTEND=noninteractive {prefix}apt-get install -y -qq {}",
+        packages.join(" ")
+    );
+    let status = Command::new("sh")
+        .args(["-c", &script])
+        .stdin(Stdio::null())
+        .status()
+        .map_err(|error| format!("cannot run apt-get: {error}"))?;
+    if !status.success() {
+        return Err(format!("installing {} failed; install it by hand", packages.join(" ")));
+    }
+    Ok(())
+}
