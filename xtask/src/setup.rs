@@ -35,7 +35,7 @@ pub fn on_path(program: &str) -> bool {
         .is_ok_and(|status| status.success())
 }
 
-fn ensure_rust_target(target: &str) -> Result<(), String> {
+pub fn ensure_rust_target(target: &str) -> Result<(), String> {
     let installed = Command::new("rustup")
         .args(["target", "list", "--installed"])
         .output()
