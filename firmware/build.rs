@@ -7,7 +7,7 @@
 //!
 //! Environment (all optional):
 //! - `MICROTRACE_SCENE`: absolute path of a `.mts` file (default: `../scenes/snooker.mts`).
-//! - `MICROTRACE_NUMBER`: `f64` or `f32` (default `f32`).
+//! - `MICROTRACE_NUMBER`: `f64`, `f32`, `fixed`, `fixed16` or `f32-micromath` (default `f32`).
 //! - `MICROTRACE_SIZE`: `WIDTHxHEIGHT` of the render (default `128x64`, the OLED).
 //! - `MICROTRACE_OPT`: `scene` (default: keep the scene's `optimize`), `all`, `none`, or a comma
 //!   list of `pixelbuffer,extents,grid,sortlist`.
@@ -102,16 +102,23 @@ fn copy_memory_layout(manifest_dir: &Path, out_dir: &Path, board: Board) {
     println!("cargo:rustc-link-search={}", out_dir.display());
 }
 
-/// The Rust type the tracer computes in. Others add their types here (and any microtrace
-/// feature they need in Cargo.toml).
+/// The Rust type the tracer computes in, and the firmware feature it needs (a new number type
+/// goes here, in Cargo.toml's features and in xtask's `number_feature`).
 fn number_type(name: &str) -> &'static str {
-    match name {
-        "f64" => "f64",
-        "f32" => "f32",
-        // "fixed" => "microtrace::number::Fixed",        (to come)
-        // "f32-micromath" => "microtrace::number::...",  (to come)
-        other => fail(&format!("MICROTRACE_NUMBER={other}: expected f64 or f32")),
+    let (type_name, feature) = match name {
+        "f64" => ("f64", None),
+        "f32" => ("f32", None),
+        "fixed" => ("microtrace::number::Fixed", Some("fixed-point")),
+        "fixed16" => ("microtrace::number::Fixed16", Some("fixed-point")),
+        "f32-micromath" => ("microtrace::number::F32Micro", Some("micromath")),
+        other => fail(&format!("MICROTRACE_NUMBER={other}: expected f64, f32, fixed, fixed16 or f32-micromath")),
+    };
+    if let Some(feature) = feature {
+        if env(&format!("CARGO_FEATURE_{}", feature.to_uppercase().replace('-', "_"))).is_none() {
+            fail(&format!("MICROTRACE_NUMBER={name} needs the firmware feature `{feature}`"));
+        }
     }
+    type_name
 }
 
 fn render_size(text: &str) -> (u16, u16) {

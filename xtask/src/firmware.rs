@@ -58,7 +58,7 @@ impl Board {
 #[derive(Clone, Debug)]
 pub struct FirmwareOptions {
     pub scene: PathBuf,
-    /// `f64` or `f32` (firmware/build.rs lists the number types).
+    /// `f64`, `f32`, `fixed`, `fixed16` or `f32-micromath` (firmware/build.rs maps them to types).
     pub number: String,
     pub board: Board,
     /// `scene` (keep the scene's `optimize`), `all`, `none`, or a comma list.
@@ -174,12 +174,22 @@ fn primitive_features(scene: &Path) -> Result<Vec<&'static str>, String> {
         .collect())
 }
 
+/// The firmware feature a number type needs (see `number_type` in firmware/build.rs).
+fn number_feature(number: &str) -> Option<&'static str> {
+    match number {
+        "fixed" | "fixed16" => Some("fixed-point"),
+        "f32-micromath" => Some("micromath"),
+        _ => None,
+    }
+}
+
 /// `cargo build --release` of the firmware; returns the ELF.
 fn build(options: &FirmwareOptions, scene: &Path, primitive_features: &[&str]) -> Result<PathBuf, String> {
     let firmware = crate::firmware_dir();
     let target_dir = firmware.join("target");
     let mut features = vec![options.board.name()];
     features.extend_from_slice(primitive_features);
+    features.extend(number_feature(&options.number));
     let output = Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
         .args(["build", "--release", "--quiet", "--no-default-features"])
         .args(["--features", &features.join(",")])
