@@ -40,11 +40,8 @@ fn main() {
 
     let text = std::fs::read(&scene_path)
         .unwrap_or_else(|error| fail(&format!("cannot read the scene {}: {error}", scene_path.display())));
-    let mut description = match microtrace::parser::parse::<PARSE_CAPACITY>(&text) {
-        Ok(description) => description,
-        Err(_) if env("MICROTRACE_TEMPORARY_BUILTIN").is_some() => temporary_builtin(),
-        Err(error) => fail(&format!("{}: {error}", scene_path.display())),
-    };
+    let mut description = microtrace::parser::parse::<PARSE_CAPACITY>(&text)
+        .unwrap_or_else(|error| fail(&format!("{}: {error}", scene_path.display())));
     description.fit_to_size(width, height);
     if let Some(optimizations) = optimization_override(env("MICROTRACE_OPT").as_deref()) {
         description.optimizations = optimizations;
@@ -269,15 +266,4 @@ fn object_source(object: &ObjectDescription) -> String {
         floats(m.cmy),
         object.line
     )
-}
-
-// TEMPORARY until the parser lands: one sphere.
-fn temporary_builtin() -> SceneDescription<PARSE_CAPACITY> {
-    let mut d = SceneDescription::default();
-    let mut o = ObjectDescription::new(Primitive::Sphere, 1);
-    o.world_from_object.scale([50.0, 50.0, 50.0]);
-    o.material.colour = 0;
-    d.objects.push(o).unwrap();
-    d.shadows = true;
-    d
 }

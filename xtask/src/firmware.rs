@@ -162,10 +162,6 @@ pub fn run(options: &FirmwareOptions) -> Result<FirmwareRun, String> {
 /// those), parsing it with the same parser as the firmware's build script.
 fn primitive_features(scene: &Path) -> Result<Vec<&'static str>, String> {
     let text = std::fs::read(scene).map_err(|error| format!("scene {}: {error}", scene.display()))?;
-    // TEMPORARY until the parser lands.
-    if std::env::var_os("MICROTRACE_TEMPORARY_BUILTIN").is_some() {
-        return Ok(vec!["sphere"]);
-    }
     let description = microtrace::parser::parse::<1024>(&text).map_err(|error| format!("{}: {error}", scene.display()))?;
     Ok(Primitive::ALL
         .into_iter()

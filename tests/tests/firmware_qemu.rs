@@ -1,0 +1,122 @@
+//! The firmware under QEMU renders exactly what the host renders. For both thesis scenes on both
+//! boards (lm3s6965evb, Cortex-M3 with the OLED; mps2-an386, Cortex-M4F) in `f32`:
+//! - `framebuffer.bin` equals, byte for byte, the host's in-process render of the same scene
+//!   (parse, `fit_to_size(128, 64)`, prepare in `f32`, `render_pga` into a `FrameBuffer`);
+//! - on the lm3s6965evb, the OLED picture captured from QEMU (`oled.png`) is that framebuffer
+//!   through the palette's `luminance()`;
+//! - the lm3s6965evb builds stay within the memory budget of firmware/README.md.
+//!
+//! Each test builds the firmware (release, a few seconds) and runs it; xtask installs QEMU and
+//! the rust targets when they are missing.
+
+use std::path::PathBuf;
+
+use microtrace::pixel::FrameBuffer;
+use microtrace::render::{render_pga, Statistics};
+use microtrace::scene::{Scene, SceneDescription};
+use xtask::firmware::{self, Board, FirmwareOptions, FirmwareRun};
+
+const WIDTH: u16 = 128;
+const HEIGHT: u16 = 64;
+const CAPACITY: usize = 64;
+
+/// The budget of firmware/README.md for the lm3s6965evb (64 KB RAM, 256 KB flash): static RAM
+/// (8 KB framebuffer + 4 KB OLED copy + a little) plus peak stack stays under half the RAM.
+const FLASH_BUDGET_BYTES: u64 = 64 * 1024;
+const STATIC_RAM_BUDGET_BYTES: u64 = 16 * 1024;
+const STACK_BUDGET_BYTES: u64 = 16 * 1024;
+
+fn scene_path(name: &str) -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../scenes").join(name)
+}
+
+/// The host's render of the scene at the display's size, in `f32`.
+fn host_render(name: &str) -> (SceneDescription<CAPACITY>, Vec<u8>, Statistics) {
+    let path = scene_path(name);
+    let text = std::fs::read(&path).unwrap();
+    let mut description =
+        microtrace::parser::parse::<CAPACITY>(&text).unwrap_or_else(|error| panic!("{}: {error}", path.display()));
+    description.fit_to_size(WIDTH, HEIGHT);
+    let scene = Scene::<f32, CAPACITY>::prepare(&description).unwrap();
+    let mut pixels = vec![0u8; WIDTH as usize * HEIGHT as usize];
+    let mut frame = FrameBuffer::new(&mut pixels, WIDTH, HEIGHT).unwrap();
+    let mut statistics = Statistics::default();
+    render_pga(&scene, &mut frame, &mut statistics);
+    (description, pixels, statistics)
+}
+
+fn run_firmware(name: &str, board: Board) -> FirmwareRun {
+    let stem = name.trim_end_matches(".mts");
+    let out = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("firmware").join(format!("{}-{stem}-f32", board.name()));
+    let options = FirmwareOptions::new(scene_path(name), board, "f32", out);
+    let run = firmware::run(&options).unwrap_or_else(|error| panic!("{name} on {}: {error}", board.name()));
+    println!("{}", firmware::summary(&run, &options));
+    run
+}
+
+fn firmware_matches_host(name: &str, board: Board) {
+    let (description, expected, statistics) = host_render(name);
+    let run = run_firmware(name, board);
+
+    let framebuffer = std::fs::read(&run.framebuffer).unwrap();
+    assert_eq!(framebuffer.len(), expected.len(), "{name} on {}: framebuffer size", board.name());
+    let differing = framebuffer.iter().zip(&expected).filter(|(a, b)| a != b).count();
+    assert!(differing == 0, "{name} on {}: {differing} of {} pixels differ from the host render", board.name(), expected.len());
+
+    // The firmware counted the same work as the host.
+    let numbers = &run.numbers;
+    assert_eq!(numbers["pixels"], statistics.pixels);
+    assert_eq!(numbers["rays_traced"], statistics.rays_traced);
+    assert_eq!(numbers["ro_tests"], statistics.ro_tests);
+    assert_eq!(numbers["shadow_rays"], statistics.shadow_rays);
+    assert!(numbers["instructions"] > 0);
+
+    if let Some(oled_png) = &run.oled_png {
+        let oled = xtask::oled::read_png(oled_png).unwrap();
+        assert_eq!((oled.width, oled.height), (WIDTH as usize, HEIGHT as usize));
+        let expected_greys: Vec<u8> =
+            expected.iter().map(|index| description.palette.entry(*index).luminance() * 17).collect();
+        let differing = oled.pixels.iter().zip(&expected_greys).filter(|(a, b)| a != b).count();
+        assert!(differing == 0, "{name}: {differing} OLED pixels differ from the framebuffer's luminance");
+    }
+
+    if board == Board::Lm3s6965evb {
+        let within = |key: &str, budget: u64| {
+            assert!(numbers[key] <= budget, "{name}: {key} = {} exceeds the budget of {budget}", numbers[key]);
+        };
+        within("flash_bytes", FLASH_BUDGET_BYTES);
+        within("static_ram_bytes", STATIC_RAM_BUDGET_BYTES);
+        within("stack_peak_bytes", STACK_BUDGET_BYTES);
+    }
+}
+
+#[test]
+fn snooker_on_lm3s6965evb_matches_the_host() {
+    firmware_matches_host("snooker.mts", Board::Lm3s6965evb);
+}
+
+#[test]
+fn lattice_on_lm3s6965evb_matches_the_host() {
+    firmware_matches_host("lattice.mts", Board::Lm3s6965evb);
+}
+
+#[test]
+fn snooker_on_mps2_an386_matches_the_host() {
+    firmware_matches_host("snooker.mts", Board::Mps2An386);
+}
+
+#[test]
+fn lattice_on_mps2_an386_matches_the_host() {
+    firmware_matches_host("lattice.mts", Board::Mps2An386);
+}
+
+#[test]
+fn a_bad_scene_fails_with_the_parsers_message() {
+    let directory = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("firmware");
+    std::fs::create_dir_all(&directory).unwrap();
+    let scene = directory.join("bad.mts");
+    std::fs::write(&scene, "viewport 0 127 0 63\nsphere\n  scale 1 1\n").unwrap();
+    let options = FirmwareOptions::new(&scene, Board::Lm3s6965evb, "f32", directory.join("bad-out"));
+    let error = firmware::run(&options).unwrap_err();
+    assert!(error.contains("bad.mts") && error.contains("line 3"), "unexpected error: {error}");
+}
