@@ -1,12 +1,506 @@
-//! TODO
-// TEMPORARY lead-engineer stub until the parser lands.
-#[derive(Debug, Clone, PartialEq)]
-pub struct SceneError { pub line: u32, pub kind: SceneErrorKind }
-#[derive(Debug, Clone, PartialEq)]
-pub enum SceneErrorKind { PrimitiveNotCompiled { primitive: &'static str }, SingularTransform, TooManyObjects { capacity: usize }, ZeroDirection }
-impl core::fmt::Display for SceneError {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result { write!(f, "line {}: {:?}", self.line, self.kind) }
+//! The `.mts` scene format (`shared/scene-format.md`): one statement per line mirroring the
+//! thesis's user-interface calls, parsed into a [`SceneDescription`].
+//!
+//! [`parse`] takes raw bytes and never panics, allocates nothing, and runs in one pass over the
+//! input (time linear in its length, whatever its lines look like). The first problem in
+//! reading order is returned as a [`SceneError`] naming the 1-based line and the reason.
+//!
+//! # Choices where the format is silent
+//!
+//! - **Lines** end at `\n`; one `\r` right before it (or at the end of the input) is dropped,
+//!   so `\r\n` files read the same. A UTF-8 byte-order mark at the very start is ignored. Line
+//!   numbers count every `\n`, including those of blank and comment lines.
+//! - **Comments**: everything from the first `#` to the end of the line is ignored unchecked
+//!   (it may hold any bytes). The statement before it must be valid UTF-8; only spaces and
+//!   tabs separate tokens (any other character, e.g. a stray `\r`, is part of a token).
+//! - **Keywords** are lower case only (`Sphere`, `color` are unknown keywords).
+//! - **Numbers** follow the grammar exactly: `[+|-] digits [. digits] [(e|E) [+|-] digits]`.
+//!   So `.5`, `5.`, `inf`, `nan`, `0x10`, `1,5`, `1_000` are malformed. A well-formed number
+//!   whose value overflows an `f64` (`1e400`) is out of range; one that underflows reads as 0.
+//! - **Integers**: a number is an integer when its exact decimal value is whole, so `100`,
+//!   `1e2`, `1.0` and `-0` are integers, and `1.5`, `1e-400` and `1.0000000000000000001` are
+//!   not (the test is made on the digits, not on the rounded float).
+//! - **Ranges**: viewport coordinates 0..=32767 with X1 <= X2 and Y1 <= Y2; window X1 < X2 and
+//!   Y1 < Y2 with finite widths; `background` 0..=255; `colour` and a group's N, R, G, B
+//!   0..=15. `ambient`, `ka`, `kd`, `ks` and `rnd` must be >= 0 (no upper bound); `pwr` must be
+//!   0..=1e6 (powers are taken as integers); each of `cmy` must be 0..=1 (they are ratios).
+//!   `viewplane`, `perspective`, `light point`, `translate` and `rotate` take any finite value.
+//! - **Directions** (`parallel`, `light direction`) are rejected when their length is zero or
+//!   cannot be computed in `f64` (as scene preparation would reject them), e.g.
+//!   `parallel 0 0 0` or `parallel 1e-200 0 0`.
+//! - **Transforms**: a `scale` with a zero factor is an error at that line. When an object ends
+//!   (at the next primitive keyword or the end of the input) its `world_from_object` must be
+//!   invertible with a finite inverse
+//!   ([`Matrix4::affine_inverse`](crate::geometry::Matrix4::affine_inverse)); otherwise the error names
+//!   the object's first line (the primitive keyword).
+//! - **`optimize`** takes `all` or `none` on its own, or one or more of `pixelbuffer`,
+//!   `extents`, `grid`, `sortlist` in any order (repeats allowed): those are on, the rest off.
+//! - **Checks order** for one statement: unknown keyword, then "needs an object", then the
+//!   argument count, then the arguments from left to right.
+//! - Global statements may appear anywhere, also between objects; the last one wins.
+
+mod error;
+mod number;
+#[cfg(test)]
+mod tests;
+
+pub use error::{SceneError, SceneErrorKind, Token, TOKEN_EXCERPT_BYTES};
+
+use crate::scene::{Light, ObjectDescription, Optimizations, Primitive, Projection, SceneDescription, Viewport, Window};
+use crate::shading::Rgb4;
+
+/// The most arguments any fixed-arity statement takes (`group N R G B up`).
+const MAX_ARGS: usize = 5;
+
+/// Parses a whole `.mts` scene. `MAX_OBJECTS` is the capacity; more objects is an error.
+pub fn parse<const MAX_OBJECTS: usize>(text: &[u8]) -> Result<SceneDescription<MAX_OBJECTS>, SceneError> {
+    let mut scene = SceneDescription::default();
+    parse_into(text, &mut scene)?;
+    Ok(scene)
 }
-pub fn parse<const M: usize>(_text: &[u8]) -> Result<crate::scene::SceneDescription<M>, SceneError> {
-    Err(SceneError { line: 0, kind: SceneErrorKind::ZeroDirection })
+
+/// The body of [`parse`], writing into a description the caller owns (so the large
+/// description is not moved around on the stack more than once).
+fn parse_into<const MAX_OBJECTS: usize>(text: &[u8], scene: &mut SceneDescription<MAX_OBJECTS>) -> Result<(), SceneError> {
+    let text = text.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(text);
+    let mut line: u32 = 0;
+    for raw in text.split(|&b| b == b'\n') {
+        line = line.saturating_add(1);
+        let raw = raw.strip_suffix(b"\r").unwrap_or(raw);
+        let code = raw.split(|&b| b == b'#').next().unwrap_or(&[]);
+        let code = core::str::from_utf8(code).map_err(|_| SceneError::new(line, SceneErrorKind::InvalidUtf8))?;
+        statement(code, line, scene)?;
+    }
+    finish_object(scene)
+}
+
+/// Splits a statement into its tokens.
+fn tokens(code: &str) -> impl Iterator<Item = &str> {
+    code.split([' ', '\t']).filter(|token| !token.is_empty())
+}
+
+/// The check at the end of each object: its transform must be invertible.
+fn finish_object<const MAX_OBJECTS: usize>(scene: &SceneDescription<MAX_OBJECTS>) -> Result<(), SceneError> {
+    match scene.objects.last() {
+        Some(object) if object.world_from_object.affine_inverse().is_none() => {
+            Err(SceneError::new(object.line, SceneErrorKind::SingularTransform))
+        }
+        _ => Ok(()),
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Keyword {
+    Viewport,
+    Window,
+    Viewplane,
+    Perspective,
+    Parallel,
+    Light,
+    Ambient,
+    Background,
+    Shadows,
+    Dither,
+    Group,
+    Optimize,
+    Primitive(Primitive),
+    Scale,
+    Rotate,
+    Translate,
+    Colour,
+    Ka,
+    Kd,
+    Ks,
+    Pwr,
+    Rnd,
+    Cmy,
+}
+
+impl Keyword {
+    const ALL: [Keyword; 26] = [
+        Keyword::Viewport,
+        Keyword::Window,
+        Keyword::Viewplane,
+        Keyword::Perspective,
+        Keyword::Parallel,
+        Keyword::Light,
+        Keyword::Ambient,
+        Keyword::Background,
+        Keyword::Shadows,
+        Keyword::Dither,
+        Keyword::Group,
+        Keyword::Optimize,
+        Keyword::Primitive(Primitive::Cube),
+        Keyword::Primitive(Primitive::Sphere),
+        Keyword::Primitive(Primitive::Cylinder),
+        Keyword::Primitive(Primitive::Cone),
+        Keyword::Scale,
+        Keyword::Rotate,
+        Keyword::Translate,
+        Keyword::Colour,
+        Keyword::Ka,
+        Keyword::Kd,
+        Keyword::Ks,
+        Keyword::Pwr,
+        Keyword::Rnd,
+        Keyword::Cmy,
+    ];
+
+    fn from_token(token: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|keyword| keyword.name() == token)
+    }
+
+    fn name(self) -> &'static str {
+        match self {
+            Keyword::Viewport => "viewport",
+            Keyword::Window => "window",
+            Keyword::Viewplane => "viewplane",
+            Keyword::Perspective => "perspective",
+            Keyword::Parallel => "parallel",
+            Keyword::Light => "light",
+            Keyword::Ambient => "ambient",
+            Keyword::Background => "background",
+            Keyword::Shadows => "shadows",
+            Keyword::Dither => "dither",
+            Keyword::Group => "group",
+            Keyword::Optimize => "optimize",
+            Keyword::Primitive(primitive) => primitive.name(),
+            Keyword::Scale => "scale",
+            Keyword::Rotate => "rotate",
+            Keyword::Translate => "translate",
+            Keyword::Colour => "colour",
+            Keyword::Ka => "ka",
+            Keyword::Kd => "kd",
+            Keyword::Ks => "ks",
+            Keyword::Pwr => "pwr",
+            Keyword::Rnd => "rnd",
+            Keyword::Cmy => "cmy",
+        }
+    }
+
+    /// (argument count, whether it is a minimum, usage).
+    fn arity(self) -> (u8, bool, &'static str) {
+        match self {
+            Keyword::Viewport => (4, false, "viewport X1 X2 Y1 Y2"),
+            Keyword::Window => (4, false, "window X1 X2 Y1 Y2"),
+            Keyword::Viewplane => (1, false, "viewplane D"),
+            Keyword::Perspective => (3, false, "perspective X Y Z"),
+            Keyword::Parallel => (3, false, "parallel DX DY DZ"),
+            Keyword::Light => (4, false, "light point X Y Z | light direction DX DY DZ"),
+            Keyword::Ambient => (1, false, "ambient A"),
+            Keyword::Background => (1, false, "background C"),
+            Keyword::Shadows => (1, false, "shadows on|off"),
+            Keyword::Dither => (1, false, "dither on|off"),
+            Keyword::Group => (5, false, "group N R G B up|down"),
+            Keyword::Optimize => (1, true, "optimize all|none|pixelbuffer extents grid sortlist"),
+            Keyword::Primitive(Primitive::Cube) => (0, false, "cube"),
+            Keyword::Primitive(Primitive::Sphere) => (0, false, "sphere"),
+            Keyword::Primitive(Primitive::Cylinder) => (0, false, "cylinder"),
+            Keyword::Primitive(Primitive::Cone) => (0, false, "cone"),
+            Keyword::Scale => (3, false, "scale SX SY SZ"),
+            Keyword::Rotate => (2, false, "rotate x|y|z DEG"),
+            Keyword::Translate => (3, false, "translate TX TY TZ"),
+            Keyword::Colour => (1, false, "colour N"),
+            Keyword::Ka => (1, false, "ka V"),
+            Keyword::Kd => (1, false, "kd V"),
+            Keyword::Ks => (1, false, "ks V"),
+            Keyword::Pwr => (1, false, "pwr V"),
+            Keyword::Rnd => (1, false, "rnd V"),
+            Keyword::Cmy => (3, false, "cmy C M Y"),
+        }
+    }
+
+    /// Whether the statement changes the most recent object.
+    fn needs_object(self) -> bool {
+        matches!(
+            self,
+            Keyword::Scale
+                | Keyword::Rotate
+                | Keyword::Translate
+                | Keyword::Colour
+                | Keyword::Ka
+                | Keyword::Kd
+                | Keyword::Ks
+                | Keyword::Pwr
+                | Keyword::Rnd
+                | Keyword::Cmy
+        )
+    }
+}
+
+/// One statement's arguments, with the helpers that read them and build errors.
+struct Statement<'a> {
+    line: u32,
+    keyword: Keyword,
+    args: [&'a str; MAX_ARGS],
+}
+
+impl<'a> Statement<'a> {
+    fn error(&self, kind: SceneErrorKind) -> SceneError {
+        SceneError::new(self.line, kind)
+    }
+
+    fn arg(&self, index: usize) -> &'a str {
+        self.args.get(index).copied().unwrap_or("")
+    }
+
+    /// A number argument, its parts and its value.
+    fn decimal(&self, index: usize, what: &'static str) -> Result<(number::Decimal<'a>, f64), SceneError> {
+        let token = self.arg(index);
+        let decimal = number::split(token)
+            .ok_or_else(|| self.error(SceneErrorKind::MalformedNumber { what, token: Token::new(token) }))?;
+        match token.parse::<f64>() {
+            Ok(value) if value.is_finite() => Ok((decimal, value)),
+            // The grammar is a subset of what `parse` accepts, so only overflow lands here.
+            _ => Err(self.error(SceneErrorKind::NumberNotFinite { what, token: Token::new(token) })),
+        }
+    }
+
+    fn real(&self, index: usize, what: &'static str) -> Result<f64, SceneError> {
+        self.decimal(index, what).map(|(_, value)| value)
+    }
+
+    /// A real in `low..=high`; `range` describes it for the error.
+    fn bounded(&self, index: usize, what: &'static str, low: f64, high: f64, range: &'static str) -> Result<f64, SceneError> {
+        let value = self.real(index, what)?;
+        if (low..=high).contains(&value) {
+            Ok(value)
+        } else {
+            Err(self.error(SceneErrorKind::ValueOutOfRange { what, token: Token::new(self.arg(index)), range }))
+        }
+    }
+
+    fn non_negative(&self, index: usize, what: &'static str) -> Result<f64, SceneError> {
+        self.bounded(index, what, 0.0, f64::INFINITY, "at least 0")
+    }
+
+    /// An integer in `min..=max`.
+    fn integer(&self, index: usize, what: &'static str, min: i32, max: i32) -> Result<i32, SceneError> {
+        let (decimal, value) = self.decimal(index, what)?;
+        let token = || Token::new(self.arg(index));
+        if !decimal.is_integral() {
+            return Err(self.error(SceneErrorKind::ExpectedInteger { what, token: token() }));
+        }
+        if !(f64::from(min)..=f64::from(max)).contains(&value) {
+            return Err(self.error(SceneErrorKind::IntegerOutOfRange { what, token: token(), min, max }));
+        }
+        // In range and whole, so the (saturating) conversion is exact.
+        Ok(value as i32)
+    }
+
+    /// A 4-bit level 0..=15.
+    fn nibble(&self, index: usize, what: &'static str) -> Result<u8, SceneError> {
+        self.integer(index, what, 0, 15).map(|value| value as u8)
+    }
+
+    fn vector(&self, first: usize, what: [&'static str; 3]) -> Result<[f64; 3], SceneError> {
+        Ok([self.real(first, what[0])?, self.real(first + 1, what[1])?, self.real(first + 2, what[2])?])
+    }
+
+    /// A vector whose length can be normalised, as scene preparation needs.
+    fn direction(&self, first: usize, what: [&'static str; 3]) -> Result<[f64; 3], SceneError> {
+        let direction = self.vector(first, what)?;
+        let length = libm::sqrt(direction.iter().map(|c| c * c).sum::<f64>());
+        if length == 0.0 || !length.is_finite() {
+            return Err(self.error(SceneErrorKind::ZeroDirection));
+        }
+        Ok(direction)
+    }
+
+    /// The position in `words` of the word argument, or an error listing them.
+    fn word(&self, index: usize, words: &[&str], expected: &'static str) -> Result<usize, SceneError> {
+        let token = self.arg(index);
+        words.iter().position(|word| *word == token).ok_or_else(|| {
+            self.error(SceneErrorKind::InvalidWord { keyword: self.keyword.name(), word: Token::new(token), expected })
+        })
+    }
+
+    fn on_off(&self) -> Result<bool, SceneError> {
+        self.word(0, &["off", "on"], "`on` or `off`").map(|index| index == 1)
+    }
+}
+
+const OPTIMIZE_EXPECTED: &str = "`all` or `none` on its own, or any of `pixelbuffer`, `extents`, `grid`, `sortlist`";
+
+/// Parses one statement (comment already removed) into the scene.
+fn statement<const MAX_OBJECTS: usize>(
+    code: &str,
+    line: u32,
+    scene: &mut SceneDescription<MAX_OBJECTS>,
+) -> Result<(), SceneError> {
+    let mut words = tokens(code);
+    let Some(first) = words.next() else {
+        return Ok(());
+    };
+    let keyword = Keyword::from_token(first)
+        .ok_or_else(|| SceneError::new(line, SceneErrorKind::UnknownKeyword { keyword: Token::new(first) }))?;
+    if keyword.needs_object() && scene.objects.is_empty() {
+        return Err(SceneError::new(line, SceneErrorKind::ObjectRequired { keyword: keyword.name() }));
+    }
+    let mut args = [""; MAX_ARGS];
+    let mut found: usize = 0;
+    for word in words {
+        if let Some(slot) = args.get_mut(found) {
+            *slot = word;
+        }
+        found = found.saturating_add(1);
+    }
+    let (expected, at_least, usage) = keyword.arity();
+    let count_ok = if at_least { found >= usize::from(expected) } else { found == usize::from(expected) };
+    if !count_ok {
+        return Err(SceneError::new(
+            line,
+            SceneErrorKind::WrongArgumentCount { keyword: keyword.name(), expected, at_least, found, usage },
+        ));
+    }
+    let s = Statement { line, keyword, args };
+    match keyword {
+        Keyword::Viewport => {
+            let x1 = s.integer(0, "viewport X1", 0, 32767)?;
+            let x2 = s.integer(1, "viewport X2", 0, 32767)?;
+            let y1 = s.integer(2, "viewport Y1", 0, 32767)?;
+            let y2 = s.integer(3, "viewport Y2", 0, 32767)?;
+            if x1 > x2 {
+                return Err(s.error(SceneErrorKind::InvalidRectangle { what: "viewport", requirement: "X1 must not be greater than X2" }));
+            }
+            if y1 > y2 {
+                return Err(s.error(SceneErrorKind::InvalidRectangle { what: "viewport", requirement: "Y1 must not be greater than Y2" }));
+            }
+            scene.viewport = Viewport { x1: x1 as u16, x2: x2 as u16, y1: y1 as u16, y2: y2 as u16 };
+        }
+        Keyword::Window => {
+            let x1 = s.real(0, "window X1")?;
+            let x2 = s.real(1, "window X2")?;
+            let y1 = s.real(2, "window Y1")?;
+            let y2 = s.real(3, "window Y2")?;
+            if x1 >= x2 {
+                return Err(s.error(SceneErrorKind::InvalidRectangle { what: "window", requirement: "X1 must be less than X2" }));
+            }
+            if y1 >= y2 {
+                return Err(s.error(SceneErrorKind::InvalidRectangle { what: "window", requirement: "Y1 must be less than Y2" }));
+            }
+            if !(x2 - x1).is_finite() || !(y2 - y1).is_finite() {
+                return Err(s.error(SceneErrorKind::InvalidRectangle {
+                    what: "window",
+                    requirement: "too large: X2 - X1 and Y2 - Y1 must be finite",
+                }));
+            }
+            scene.window = Window { x1, x2, y1, y2 };
+        }
+        Keyword::Viewplane => scene.view_plane = s.real(0, "viewplane D")?,
+        Keyword::Perspective => {
+            scene.projection = Projection::Perspective { eye: s.vector(0, ["perspective X", "perspective Y", "perspective Z"])? };
+        }
+        Keyword::Parallel => {
+            scene.projection =
+                Projection::Parallel { direction: s.direction(0, ["parallel DX", "parallel DY", "parallel DZ"])? };
+        }
+        Keyword::Light => {
+            scene.light = match s.word(0, &["point", "direction"], "`point` or `direction`")? {
+                0 => Light::Point(s.vector(1, ["light point X", "light point Y", "light point Z"])?),
+                _ => Light::Direction(s.direction(1, ["light direction DX", "light direction DY", "light direction DZ"])?),
+            };
+        }
+        Keyword::Ambient => scene.ambient = s.non_negative(0, "ambient")?,
+        Keyword::Background => scene.background = s.integer(0, "background", 0, 255)? as u8,
+        Keyword::Shadows => scene.shadows = s.on_off()?,
+        Keyword::Dither => scene.dither = s.on_off()?,
+        Keyword::Group => {
+            let group = s.nibble(0, "group N")?;
+            let cell = Rgb4::new(s.nibble(1, "group R")?, s.nibble(2, "group G")?, s.nibble(3, "group B")?);
+            match s.word(4, &["up", "down"], "`up` or `down`")? {
+                0 => scene.palette.set_group_up(group, cell),
+                _ => scene.palette.set_group_down(group, cell),
+            }
+        }
+        Keyword::Optimize => scene.optimizations = optimize(code, line)?,
+        Keyword::Primitive(primitive) => {
+            finish_object(scene)?;
+            scene
+                .objects
+                .push(ObjectDescription::new(primitive, line))
+                .map_err(|_| s.error(SceneErrorKind::TooManyObjects { capacity: MAX_OBJECTS }))?;
+        }
+        Keyword::Scale
+        | Keyword::Rotate
+        | Keyword::Translate
+        | Keyword::Colour
+        | Keyword::Ka
+        | Keyword::Kd
+        | Keyword::Ks
+        | Keyword::Pwr
+        | Keyword::Rnd
+        | Keyword::Cmy => object_statement(&s, scene)?,
+    }
+    Ok(())
+}
+
+/// `optimize ...`: the argument count is already checked to be at least 1.
+fn optimize(code: &str, line: u32) -> Result<Optimizations, SceneError> {
+    let invalid = |word: &str| {
+        SceneError::new(line, SceneErrorKind::InvalidWord { keyword: "optimize", word: Token::new(word), expected: OPTIMIZE_EXPECTED })
+    };
+    let mut words = tokens(code).skip(1);
+    let first = words.next().unwrap_or("");
+    if first == "all" || first == "none" {
+        // `all` and `none` stand alone.
+        return match words.next() {
+            Some(extra) => Err(invalid(extra)),
+            None if first == "all" => Ok(Optimizations::ALL),
+            None => Ok(Optimizations::NONE),
+        };
+    }
+    let mut chosen = Optimizations::NONE;
+    for word in core::iter::once(first).chain(words) {
+        match word {
+            "pixelbuffer" => chosen.pixelbuffer = true,
+            "extents" => chosen.extents = true,
+            "grid" => chosen.grid = true,
+            "sortlist" => chosen.sortlist = true,
+            _ => return Err(invalid(word)),
+        }
+    }
+    Ok(chosen)
+}
+
+/// A statement that changes the most recent object.
+fn object_statement<const MAX_OBJECTS: usize>(
+    s: &Statement<'_>,
+    scene: &mut SceneDescription<MAX_OBJECTS>,
+) -> Result<(), SceneError> {
+    let object = scene
+        .objects
+        .last_mut()
+        .ok_or_else(|| s.error(SceneErrorKind::ObjectRequired { keyword: s.keyword.name() }))?;
+    let material = &mut object.material;
+    match s.keyword {
+        Keyword::Scale => {
+            let factors = s.vector(0, ["scale SX", "scale SY", "scale SZ"])?;
+            if factors.contains(&0.0) {
+                return Err(s.error(SceneErrorKind::SingularTransform));
+            }
+            object.world_from_object.scale(factors);
+        }
+        Keyword::Rotate => {
+            let axis = s.word(0, &["x", "y", "z"], "an axis `x`, `y` or `z`")?;
+            let degrees = s.real(1, "rotate DEG")?;
+            object.world_from_object.rotate(axis, degrees);
+        }
+        Keyword::Translate => object.world_from_object.translate(s.vector(0, ["translate TX", "translate TY", "translate TZ"])?),
+        Keyword::Colour => material.colour = s.nibble(0, "colour")?,
+        Keyword::Ka => material.ka = s.non_negative(0, "ka")?,
+        Keyword::Kd => material.kd = s.non_negative(0, "kd")?,
+        Keyword::Ks => material.ks = s.non_negative(0, "ks")?,
+        Keyword::Pwr => material.pwr = s.bounded(0, "pwr", 0.0, 1.0e6, "from 0 to 1000000")?,
+        Keyword::Rnd => material.rnd = s.non_negative(0, "rnd")?,
+        Keyword::Cmy => {
+            material.cmy = [
+                s.bounded(0, "cmy C", 0.0, 1.0, "from 0 to 1")?,
+                s.bounded(1, "cmy M", 0.0, 1.0, "from 0 to 1")?,
+                s.bounded(2, "cmy Y", 0.0, 1.0, "from 0 to 1")?,
+            ];
+        }
+        _ => {}
+    }
+    Ok(())
 }

@@ -1,0 +1,177 @@
+//! Errors of the scene format: a line number and a reason, with a `Display` that reads
+//! `line 12: <reason>`. Scene preparation ([`crate::scene::Scene::prepare`]) reports its own
+//! problems with the same type.
+
+use core::fmt;
+
+/// How many bytes of an offending token an error keeps (cut at a character boundary).
+pub const TOKEN_EXCERPT_BYTES: usize = 20;
+
+/// The start of an offending token, kept without an allocator: at most
+/// [`TOKEN_EXCERPT_BYTES`] bytes, cut at a character boundary, with a flag saying whether
+/// anything was cut off. `Display` shows it in backticks with control characters escaped and
+/// `...` after a cut.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Token {
+    text: heapless::String<TOKEN_EXCERPT_BYTES>,
+    truncated: bool,
+}
+
+impl Token {
+    /// Keeps the first characters of `text` that fit in [`TOKEN_EXCERPT_BYTES`] bytes.
+    pub fn new(text: &str) -> Self {
+        let mut kept = heapless::String::new();
+        let mut truncated = false;
+        for c in text.chars() {
+            if kept.push(c).is_err() {
+                truncated = true;
+                break;
+            }
+        }
+        Self { text: kept, truncated }
+    }
+
+    /// The kept characters (without the `...`).
+    pub fn as_str(&self) -> &str {
+        self.text.as_str()
+    }
+
+    /// Whether the token was longer than what is kept.
+    pub fn is_truncated(&self) -> bool {
+        self.truncated
+    }
+}
+
+impl fmt::Display for Token {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str("`")?;
+        for c in self.text.chars() {
+            write!(f, "{}", c.escape_debug())?;
+        }
+        if self.truncated {
+            f.write_str("...")?;
+        }
+        f.write_str("`")
+    }
+}
+
+/// A scene error: where (`line`, 1-based; 0 when the problem is not tied to a line) and what.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SceneError {
+    pub line: u32,
+    pub kind: SceneErrorKind,
+}
+
+impl SceneError {
+    pub const fn new(line: u32, kind: SceneErrorKind) -> Self {
+        Self { line, kind }
+    }
+}
+
+/// Why a scene was rejected.
+#[derive(Clone, Debug, PartialEq)]
+pub enum SceneErrorKind {
+    /// The statement part of the line (before any `#`) is not valid UTF-8.
+    InvalidUtf8,
+    /// The first word of a statement is not a keyword of the format.
+    UnknownKeyword { keyword: Token },
+    /// A statement has the wrong number of arguments. `expected` is the exact count, or the
+    /// minimum when `at_least` is set; `usage` shows the statement's form.
+    WrongArgumentCount { keyword: &'static str, expected: u8, at_least: bool, found: usize, usage: &'static str },
+    /// A word argument (`on`/`off`, an axis, a light type, ...) is not one of the allowed words.
+    InvalidWord { keyword: &'static str, word: Token, expected: &'static str },
+    /// A number argument does not follow the format's grammar
+    /// (optional sign, digits, optional `.digits`, optional exponent).
+    MalformedNumber { what: &'static str, token: Token },
+    /// A well-formed number too large for a 64-bit float (e.g. `1e400`).
+    NumberNotFinite { what: &'static str, token: Token },
+    /// An integer argument has a fractional part.
+    ExpectedInteger { what: &'static str, token: Token },
+    /// An integer argument lies outside its range.
+    IntegerOutOfRange { what: &'static str, token: Token, min: i32, max: i32 },
+    /// A real argument lies outside its range (`range` reads e.g. "at least 0", "0 to 1").
+    ValueOutOfRange { what: &'static str, token: Token, range: &'static str },
+    /// The corners of a viewport or window are in the wrong order (or the window is too
+    /// large); `requirement` says what must hold.
+    InvalidRectangle { what: &'static str, requirement: &'static str },
+    /// A direction (parallel projection, directional light) is the zero vector, or its length
+    /// cannot be computed (underflows to zero or overflows).
+    ZeroDirection,
+    /// An object statement (`scale`, `colour`, ...) before the first primitive keyword.
+    ObjectRequired { keyword: &'static str },
+    /// More objects than the build's capacity.
+    TooManyObjects { capacity: usize },
+    /// An object's transform cannot be inverted: a `scale` with a zero factor (the line is the
+    /// `scale` statement's) or a transform that became singular or non-finite (the line is
+    /// the object's first line).
+    SingularTransform,
+    /// The scene uses a primitive that this build leaves out (scene preparation).
+    PrimitiveNotCompiled { primitive: &'static str },
+    /// A value of the object starting on `object_line` does not fit the number type the scene
+    /// is prepared in (scene preparation).
+    OutOfRangeForNumberType { object_line: u32, what: &'static str },
+}
+
+impl fmt::Display for SceneErrorKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::InvalidUtf8 => f.write_str("the statement is not valid UTF-8 text"),
+            Self::UnknownKeyword { keyword } => write!(f, "unknown keyword {keyword}"),
+            Self::WrongArgumentCount { keyword, expected, at_least, found, usage } => {
+                f.write_str("`")?;
+                f.write_str(keyword)?;
+                f.write_str("` takes ")?;
+                match (expected, at_least) {
+                    (0, false) => f.write_str("no arguments")?,
+                    (1, false) => f.write_str("1 argument")?,
+                    (n, false) => write!(f, "{n} arguments")?,
+                    (1, true) => f.write_str("at least 1 argument")?,
+                    (n, true) => write!(f, "at least {n} arguments")?,
+                }
+                write!(f, " (`{usage}`), found {found}")
+            }
+            Self::InvalidWord { keyword, word, expected } => {
+                write!(f, "`{keyword}`: invalid word {word}, expected {expected}")
+            }
+            Self::MalformedNumber { what, token } => write!(
+                f,
+                "{what}: malformed number {token} (expected an optional sign, digits, an optional \
+                 fraction and an optional exponent, e.g. -1.5 or 2e-3)"
+            ),
+            Self::NumberNotFinite { what, token } => {
+                write!(f, "{what}: number {token} is out of range (too large for a 64-bit float)")
+            }
+            Self::ExpectedInteger { what, token } => write!(f, "{what}: expected an integer, found {token}"),
+            Self::IntegerOutOfRange { what, token, min, max } => {
+                write!(f, "{what}: {token} is out of range (must be an integer from {min} to {max})")
+            }
+            Self::ValueOutOfRange { what, token, range } => write!(f, "{what}: {token} is out of range (must be {range})"),
+            Self::InvalidRectangle { what, requirement } => write!(f, "{what}: {requirement}"),
+            Self::ZeroDirection => f.write_str(
+                "the direction is the zero vector (or too small or too large for its length to be computed)",
+            ),
+            Self::ObjectRequired { keyword } => write!(
+                f,
+                "`{keyword}` changes the most recent object, but no object has started yet \
+                 (start one with cube, sphere, cylinder or cone)"
+            ),
+            Self::TooManyObjects { capacity } => {
+                write!(f, "too many objects: this build holds at most {capacity}")
+            }
+            Self::SingularTransform => f.write_str("singular transform: the object's transform cannot be inverted"),
+            Self::PrimitiveNotCompiled { primitive } => write!(f, "{primitive} is not compiled into this build"),
+            Self::OutOfRangeForNumberType { object_line, what } => write!(
+                f,
+                "object starting on line {object_line}: {what} cannot be represented in this number type"
+            ),
+        }
+    }
+}
+
+impl fmt::Display for SceneError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "line {}: {}", self.line, self.kind)
+    }
+}
+
+impl core::error::Error for SceneError {}
