@@ -581,3 +581,26 @@ fn a_long_line_is_handled() {
     let comment = std::format!("sphere #{}", "\u{ff}".repeat(1 << 19));
     assert_eq!(ok(&comment).objects.len(), 1);
 }
+
+#[test]
+fn exact_messages() {
+    for (text, message) in [
+        ("viewport 0 1 2", "line 1: `viewport` takes 4 arguments (`viewport X1 X2 Y1 Y2`), found 3"),
+        ("\nsphere 2", "line 2: `sphere` takes no arguments (`sphere`), found 1"),
+        ("optimize", "line 1: `optimize` takes at least 1 argument (`optimize all|none|pixelbuffer extents grid sortlist`), found 0"),
+        ("bogus 1 2", "line 1: unknown keyword `bogus`"),
+        ("shadows maybe", "line 1: `shadows`: invalid word `maybe`, expected `on` or `off`"),
+        ("background 1.5", "line 1: background: expected an integer, found `1.5`"),
+        ("background 300", "line 1: background: `300` is out of range (must be an integer from 0 to 255)"),
+        ("ambient -1", "line 1: ambient: `-1` is out of range (must be at least 0)"),
+        ("viewplane 1e400", "line 1: viewplane D: number `1e400` is out of range (too large for a 64-bit float)"),
+        ("window 1 0 0 1", "line 1: window: X1 must be less than X2"),
+        ("sphere\nscale 0 1 1", "line 2: singular transform: the object's transform cannot be inverted"),
+        ("ka 1", "line 1: `ka` changes the most recent object, but no object has started yet (start one with cube, sphere, cylinder or cone)"),
+        ("parallel 0 0 0", "line 1: the direction is the zero vector (or too small or too large for its length to be computed)"),
+    ] {
+        assert_eq!(err(text).to_string(), message);
+    }
+    assert!(err("viewplane .5").to_string().starts_with("line 1: viewplane D: malformed number `.5` (expected"));
+    assert_eq!(err_bytes(b"\xff").to_string(), "line 1: the statement is not valid UTF-8 text");
+}
