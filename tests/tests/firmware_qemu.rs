@@ -120,3 +120,10 @@ fn a_bad_scene_fails_with_the_parsers_message() {
     let error = firmware::run(&options).unwrap_err();
     assert!(error.contains("bad.mts") && error.contains("line 3"), "unexpected error: {error}");
 }
+
+/// The real-board example (Raspberry Pi Pico + SSD1306) keeps compiling against the core.
+#[test]
+fn the_pico_example_builds() {
+    let elf = xtask::example::build().unwrap_or_else(|error| panic!("{error}"));
+    assert!(elf.is_file(), "{} was not built", elf.display());
+}
