@@ -37,6 +37,9 @@ impl Rng {
     fn pick<'a, T>(&mut self, items: &'a [T]) -> &'a T {
         &items[self.below(items.len())]
     }
+    fn pick_str(&mut self, items: &[&'static str]) -> &'static str {
+        items[self.below(items.len())]
+    }
 }
 
 fn preview(input: &[u8]) -> String {
@@ -174,7 +177,7 @@ fn statement(rng: &mut Rng) -> String {
         0 => line.push_str("# a comment"),
         1 => {}
         _ => {
-            line.push_str(*rng.pick(KEYWORDS));
+            line.push_str(rng.pick_str(KEYWORDS));
             let count = rng.below(7);
             for _ in 0..count {
                 line.push_str(if rng.below(8) == 0 { "\t" } else { " " });
@@ -234,7 +237,7 @@ fn token_soup() {
             let mut text = String::new();
             // Usually start with an object so object statements are reachable.
             if rng.below(4) != 0 {
-                text.push_str(*rng.pick(&["sphere\n", "cube\n", "cylinder\n", "cone\n"]));
+                text.push_str(rng.pick_str(&["sphere\n", "cube\n", "cylinder\n", "cone\n"]));
             }
             for _ in 0..rng.below(8) {
                 text.push_str(&statement(&mut rng));
@@ -346,6 +349,9 @@ fn huge_and_tiny_numbers_in_every_position() {
     });
 }
 
+/// A named family of inputs, built at a given size.
+type LineCase = (&'static str, Box<dyn Fn(usize) -> Vec<u8>>);
+
 /// Parses and checks `input`, returning how long the parse took.
 fn timed(input: &[u8]) -> Duration {
     let start = Instant::now();
@@ -357,7 +363,7 @@ fn timed(input: &[u8]) -> Duration {
 fn ten_megabyte_lines_take_linear_time() {
     on_big_stack(|| {
         const TEN_MB: usize = 10 << 20;
-        let cases: Vec<(&str, Box<dyn Fn(usize) -> Vec<u8>>)> = vec![
+        let cases: Vec<LineCase> = vec![
             ("a long number", Box::new(|n| format!("viewplane {}", "9".repeat(n)).into_bytes())),
             ("a long fraction", Box::new(|n| format!("viewplane 1.{}", "3".repeat(n)).into_bytes())),
             ("a long exponent", Box::new(|n| format!("background 1e{}", "1".repeat(n)).into_bytes())),
