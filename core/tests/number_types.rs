@@ -511,3 +511,43 @@ fn thesis_scenes_at_128x64_match_f64() {
 fn thesis_scenes_at_full_size_match_f64() {
     compare_scenes(0, 0);
 }
+
+/// `Fixed`'s chunked long division against an exact 128-bit reference, over raw values of every
+/// magnitude.
+#[cfg(feature = "fixed-point")]
+#[test]
+fn fixed_division_is_exactly_rounded() {
+    let mut rng = Rng(0x1234_5678_9ABC_DEF1);
+    for _ in 0..200_000 {
+        let a = (rng.next_u64() as i64) >> (rng.next_u64() % 64);
+        let b = (rng.next_u64() as i64) >> (rng.next_u64() % 64);
+        let got = Fixed::from_bits(a).checked_div(Fixed::from_bits(b)).map(Fixed::to_bits);
+        if b == 0 {
+            assert_eq!(got, None);
+            continue;
+        }
+        let (n, d) = (i128::from(a) << 32, i128::from(b));
+        let (q, r) = (n / d, n % d);
+        // Round half away from zero.
+        let q = if 2 * r.abs() >= d.abs() { q + if (n < 0) != (d < 0) { -1 } else { 1 } } else { q };
+        let expected = q.clamp(i128::from(i64::MIN), i128::from(i64::MAX)) as i64;
+        assert_eq!(got, Some(expected), "{a} / {b}");
+    }
+}
+
+/// `Fixed`'s multiplication against an exact 128-bit reference.
+#[cfg(feature = "fixed-point")]
+#[test]
+fn fixed_multiplication_is_exactly_rounded() {
+    let mut rng = Rng(0x0F1E_2D3C_4B5A_6978);
+    for _ in 0..200_000 {
+        let a = (rng.next_u64() as i64) >> (rng.next_u64() % 64);
+        let b = (rng.next_u64() as i64) >> (rng.next_u64() % 64);
+        let got = (Fixed::from_bits(a) * Fixed::from_bits(b)).to_bits();
+        let p = i128::from(a) * i128::from(b);
+        // Round to nearest, ties toward +∞.
+        let q = (p + (1 << 31)) >> 32;
+        let expected = q.clamp(i128::from(i64::MIN), i128::from(i64::MAX)) as i64;
+        assert_eq!(got, expected, "{a} * {b}");
+    }
+}
