@@ -647,3 +647,29 @@ fn identify_by_first_byte() {
         assert_eq!(ImageFormat::from_id(format.id()), Some(format));
     }
 }
+
+#[test]
+fn a_full_width_row_of_65536_pixels() {
+    let row: Vec<u8> = (0..65536u32).map(|i| if i % 1000 < 500 { 3 } else { (i % 7) as u8 }).collect();
+    let mut out = vec![0u8; max_compressed_row_len(row.len())];
+    let n = compress_row(&row, 9, 0, u16::MAX, &mut out);
+    assert!(n > 0);
+    let mut decoded = Vec::new();
+    let info = decode(&out[..n], &mut |event| match event {
+        DecodedEvent::Indices { x, pixels, .. } => {
+            assert_eq!(x as usize, decoded.len());
+            decoded.extend_from_slice(pixels);
+        }
+        DecodedEvent::Fill { x, count, index, .. } => {
+            assert_eq!(x as usize, decoded.len());
+            decoded.extend(core::iter::repeat_n(index, count as usize));
+        }
+        _ => {}
+    })
+    .unwrap();
+    assert_eq!((info.width(), info.height(), info.pixel_count()), (65536, 1, 65536));
+    assert_eq!(decoded, row);
+    // And as an uncompressed file: the header says 0..65535.
+    let file = raw_file(pga_uncompressed::write_header(info.viewport), &row);
+    assert_eq!(inspect(&file).unwrap().width(), 65536);
+}
