@@ -41,7 +41,7 @@ pub const MAX_PACKET_PIXELS: usize = 128;
 ///
 /// Why: a run packet costs 2 bytes for at least 2 pixels, a literal packet n + 1 bytes for
 /// n ≥ 2 pixels (1.5 bytes a pixel at worst), and the single trailing pixel 2 bytes. With k
-/// literal packets over L pixels the packets cost at most L + k + 2·[trailing], k ≤ L / 2, which
+/// literal packets over L pixels the packets cost at most L + k (+ 2 for a trailing pixel), k ≤ L / 2, which
 /// is largest for rows like `0,1,1,2,2,3,3,…` (all two-pixel literals) and gives the bound; the
 /// tests check by exhaustive search that it is reached for every small width. The thesis
 /// allocated only 2·width bytes, which is too small (with its 7-byte header) for widths under 14.
