@@ -95,7 +95,11 @@ pub struct FirmwareRun {
 /// under this lock so that concurrent runs (the tests) never run each other's firmware.
 static BUILD_LOCK: Mutex<()> = Mutex::new(());
 
+/// The number types firmware/build.rs knows.
+pub const NUMBERS: [&str; 5] = ["f64", "f32", "fixed", "fixed16", "f32-micromath"];
+
 pub fn run(options: &FirmwareOptions) -> Result<FirmwareRun, String> {
+    check_options(options)?;
     let scene = options
         .scene
         .canonicalize()
@@ -156,6 +160,24 @@ pub fn run(options: &FirmwareOptions) -> Result<FirmwareRun, String> {
     let framebuffer = out.join("framebuffer.bin");
     let oled_png = options.board.has_display().then(|| out.join("oled.png"));
     Ok(FirmwareRun { elf: elf_path, framebuffer, oled_png, report_json, numbers: integers })
+}
+
+/// Says what is wrong with `--number` and `--opt` before anything is built.
+fn check_options(options: &FirmwareOptions) -> Result<(), String> {
+    if !NUMBERS.contains(&options.number.as_str()) {
+        return Err(format!("unknown number type `{}` (one of {})", options.number, NUMBERS.join(", ")));
+    }
+    let optimizations = options.optimizations.as_str();
+    if !matches!(optimizations, "scene" | "all" | "none") {
+        for name in optimizations.split(',') {
+            if !["pixelbuffer", "extents", "grid", "sortlist"].contains(&name.trim()) {
+                return Err(format!(
+                    "unknown optimization `{name}` in --opt (scene, all, none, or a list of pixelbuffer,extents,grid,sortlist)"
+                ));
+            }
+        }
+    }
+    Ok(())
 }
 
 /// The `cube`/`sphere`/`cylinder`/`cone` features the scene needs (the firmware models only
