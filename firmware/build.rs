@@ -215,8 +215,9 @@ fn generate<const N: usize>(description: &SceneDescription<N>, scene_path: &Path
     writeln!(out, "pub const WIDTH: u16 = {};", v.width()).unwrap();
     writeln!(out, "pub const HEIGHT: u16 = {};", v.height()).unwrap();
     writeln!(out, "pub const PIXEL_COUNT: usize = {};", v.pixel_count()).unwrap();
-    writeln!(out, "/// The scene's settings; its objects are in [`OBJECTS`].").unwrap();
-    writeln!(out, "pub static SCENE: SceneDescription<0> = SceneDescription {{").unwrap();
+    writeln!(out, "/// The scene's settings (a constant: every field is const-constructible); its objects are").unwrap();
+    writeln!(out, "/// in [`OBJECTS`].").unwrap();
+    writeln!(out, "pub const SCENE_DESCRIPTION: SceneDescription<0> = SceneDescription {{").unwrap();
     writeln!(out, "    viewport: Viewport {{ x1: {}, x2: {}, y1: {}, y2: {} }},", v.x1, v.x2, v.y1, v.y2).unwrap();
     writeln!(out, "    window: Window {{ x1: {}, x2: {}, y1: {}, y2: {} }},", float(w.x1), float(w.x2), float(w.y1), float(w.y2)).unwrap();
     writeln!(out, "    view_plane: {},", float(d.view_plane)).unwrap();
@@ -235,6 +236,9 @@ fn generate<const N: usize>(description: &SceneDescription<N>, scene_path: &Path
     writeln!(out, "    palette: Palette {{ entries: [{}] }},", palette.join(", ")).unwrap();
     writeln!(out, "    objects: heapless::Vec::new(),").unwrap();
     writeln!(out, "}};").unwrap();
+    writeln!(out, "/// The same in one place in flash: `&SCENE_DESCRIPTION` would build a copy on the stack").unwrap();
+    writeln!(out, "/// (heapless::Vec has a destructor, so the constant is not promoted to a static).").unwrap();
+    writeln!(out, "pub static SCENE: SceneDescription<0> = SCENE_DESCRIPTION;").unwrap();
     writeln!(out, "pub const OBJECT_COUNT: usize = {};", d.objects.len()).unwrap();
     writeln!(out, "pub static OBJECTS: [ObjectDescription; OBJECT_COUNT] = [").unwrap();
     for object in &d.objects {
