@@ -518,9 +518,20 @@ fn thesis_scenes_at_full_size_match_f64() {
 #[test]
 fn fixed_division_is_exactly_rounded() {
     let mut rng = Rng(0x1234_5678_9ABC_DEF1);
-    for _ in 0..200_000 {
-        let a = (rng.next_u64() as i64) >> (rng.next_u64() % 64);
-        let b = (rng.next_u64() as i64) >> (rng.next_u64() % 64);
+    let special = [0, 1, -1, 2, i64::MAX, i64::MIN, i64::MIN + 1, 1 << 32, -(1 << 32), (1 << 32) - 1, 1 << 31, 1 << 63 >> 1, 0xFFFF_FFFF_0000_0000u64 as i64 >> 1];
+    for i in 0..1_000_000 {
+        let mut a = (rng.next_u64() as i64) >> (rng.next_u64() % 64);
+        let mut b = (rng.next_u64() as i64) >> (rng.next_u64() % 64);
+        if i % 7 == 0 {
+            a = special[(rng.next_u64() % special.len() as u64) as usize];
+        }
+        if i % 5 == 0 {
+            // Powers of two and their neighbours: the normalisation boundaries.
+            b = ((1u64 << (rng.next_u64() % 63)) as i64).wrapping_add((rng.next_u64() % 3) as i64 - 1);
+            if i % 2 == 0 {
+                b = -b;
+            }
+        }
         let got = Fixed::from_bits(a).checked_div(Fixed::from_bits(b)).map(Fixed::to_bits);
         if b == 0 {
             assert_eq!(got, None);

@@ -88,13 +88,59 @@ fn mul_q32(a: i64, b: i64) -> i64 {
     round_q64(wide_mul(a, b))
 }
 
+/// `(u1·2³² + u0) / v` for a normalised divisor (top bit set) and `u1 < v`, so the quotient
+/// fits 32 bits: Hacker's Delight `divlu`, two 16-bit quotient digits from the 32-bit hardware
+/// `UDIV` (Cortex-M3 has no 64-bit division). All intermediate values fit `u32` as the
+/// algorithm guarantees; the wrapping operations only keep debug builds from checking that.
+#[inline]
+fn divlu(u1: u32, u0: u32, v: u32) -> u32 {
+    const B: u32 = 1 << 16;
+    let (vn1, vn0) = (v >> 16, v & 0xFFFF); // vn1 ≥ 2^15
+    let (un1, un0) = (u0 >> 16, u0 & 0xFFFF);
+    let mut q1 = u1 / vn1;
+    let mut rhat = u1 - q1 * vn1;
+    while q1 >= B || q1 * vn0 > B * rhat + un1 {
+        q1 -= 1;
+        rhat += vn1;
+        if rhat >= B {
+            break;
+        }
+    }
+    let un21 = u1.wrapping_mul(B).wrapping_add(un1).wrapping_sub(q1.wrapping_mul(v));
+    let mut q0 = un21 / vn1;
+    let mut rhat = un21 - q0 * vn1;
+    while q0 >= B || q0 * vn0 > B * rhat + un0 {
+        q0 -= 1;
+        rhat += vn1;
+        if rhat >= B {
+            break;
+        }
+    }
+    q1.wrapping_mul(B).wrapping_add(q0)
+}
+
+/// One step of Knuth's algorithm D with 32-bit digits: the quotient digit and remainder of
+/// `a / y` for a normalised 64-bit `y` and `a < y·2³²`. The digit estimate from `divlu` on the
+/// top words is at most 2 too large (Knuth, TAOCP 4.3.1, theorem B); the product is formed
+/// from two `UMULL`s.
+#[inline]
+fn divide_step(a: u128, y: u64) -> (u64, u64) {
+    let (a2, a1) = ((a >> 64) as u32, (a >> 32) as u32);
+    let y1 = (y >> 32) as u32;
+    let mut digit = if a2 >= y1 { u32::MAX } else { divlu(a2, a1, y1) };
+    let mut product = (u128::from(u64::from(digit) * (y >> 32)) << 32) + u128::from(u64::from(digit) * (y & 0xFFFF_FFFF));
+    while product > a {
+        digit -= 1;
+        product -= u128::from(y);
+    }
+    (u64::from(digit), (a - product) as u64)
+}
+
 /// `a / b` in Q32.32, rounded to nearest (ties away from zero), saturating; `None` for `b == 0`.
 ///
-/// `⌊|a|·2³² / |b|⌋` by long division in chunks of 64-bit divisions (`__aeabi_uldivmod` on
-/// Cortex-M3, which has only a 32-bit `UDIV`): `|a|` shifted left as far as it fits, then the
-/// remaining fraction bits, as many per step as the divisor's leading zeros allow: one division when
-/// |a| < 1, usually two otherwise. A 128-bit division (about ten times slower there) is left only
-/// for divisors of 2²⁴ and more.
+/// `|a|·2³² / |b|` by Knuth's long division with 32-bit digits on the normalised divisor,
+/// each digit estimated with the 32-bit hardware division (two or three `UDIV`s per result
+/// instead of a call to the 64- or 128-bit software division).
 #[inline]
 fn div_q32(a: i64, b: i64) -> Option<i64> {
     if b == 0 {
@@ -104,37 +150,33 @@ fn div_q32(a: i64, b: i64) -> Option<i64> {
     let (x, y) = (a.unsigned_abs(), b.unsigned_abs());
     let limit = if negative { 1u64 << 63 } else { i64::MAX as u64 };
     let saturated = if negative { i64::MIN } else { i64::MAX };
-    let step = y.leading_zeros();
-    let magnitude = if step >= 8 {
-        // First step: |a| shifted as far as it goes (all 32 bits when |a| < 1).
-        let first = x.leading_zeros().min(32);
-        let shifted = x << first;
-        let (mut quotient, mut remainder) = (shifted / y, shifted % y);
-        let mut bits = 32 - first;
-        while bits > 0 {
-            if quotient >> (63 - bits) != 0 {
-                // quotient·2^bits ≥ 2^63: out of range.
-                return Some(saturated);
-            }
-            // remainder < y < 2^(64 − step), so shifting it by `step` bits cannot overflow.
-            let chunk = step.min(bits);
-            let shifted = remainder << chunk;
-            quotient = (quotient << chunk) | (shifted / y);
-            remainder = shifted % y;
-            bits -= chunk;
-        }
-        // Round half away from zero: remainder ≥ y/2. quotient < 2^64 − 2^32 here.
-        quotient + u64::from(remainder >= y - remainder)
-    } else {
-        let n = u128::from(x) << 32;
-        let d = u128::from(y);
-        let (q, r) = (n / d, n % d);
-        let q = q + u128::from(r >= d - r);
-        if q > u128::from(limit) {
+    let shift = y.leading_zeros();
+    let (quotient, remainder) = if shift >= 32 {
+        // One-digit divisor (|b| < 1). The quotient reaches 2^63 exactly when x ≥ y·2^31.
+        if x >= y << 31 {
             return Some(saturated);
         }
-        q as u64
+        let shift = shift - 32;
+        let v = (y << shift) as u32;
+        // x·2^(32 + shift) has the digits d2:d1:0 (d3 = 0 and d2 < v, as the quotient < 2^63).
+        let n = u128::from(x) << (32 + shift);
+        let (d2, d1) = ((n >> 64) as u32, (n >> 32) as u32);
+        let q1 = divlu(d2, d1, v);
+        let r1 = d1.wrapping_sub(q1.wrapping_mul(v)); // (d2:d1) − q1·v < v
+        let q0 = divlu(r1, 0, v);
+        let r0 = 0u32.wrapping_sub(q0.wrapping_mul(v));
+        ((u64::from(q1) << 32) | u64::from(q0), u64::from(r0) >> shift)
+    } else {
+        // Two-digit divisor: n = x·2^(32 + shift) < 2^127, quotient < 2^64 in two digits.
+        let y_normalised = y << shift;
+        let n = u128::from(x) << (32 + shift);
+        let (q1, r1) = divide_step(n >> 32, y_normalised);
+        let (q0, r0) = divide_step(u128::from(r1) << 32, y_normalised);
+        ((q1 << 32) | q0, r0 >> shift)
     };
+    // Round half away from zero: remainder ≥ y/2. quotient < 2^64 − 1 here (the divisor's top
+    // digit is at least 2^31), so adding 1 cannot overflow.
+    let magnitude = quotient + u64::from(remainder >= y - remainder);
     Some(if magnitude > limit {
         saturated
     } else if negative {
