@@ -127,3 +127,13 @@ fn the_pico_example_builds() {
     let elf = xtask::example::build().unwrap_or_else(|error| panic!("{error}"));
     assert!(elf.is_file(), "{} was not built", elf.display());
 }
+
+/// The firmware models only the primitives its features enable: building a scene of spheres
+/// without the `sphere` feature fails in build.rs, saying so.
+#[test]
+fn a_scene_needing_a_primitive_left_out_does_not_build() {
+    let out = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("firmware/no-sphere");
+    let options = FirmwareOptions::new(scene_path("snooker.mts"), Board::Lm3s6965evb, "f32", out);
+    let error = firmware::build_with_primitives(&options, &["cube"]).unwrap_err();
+    assert!(error.contains("without the `sphere` feature"), "unexpected error: {error}");
+}

@@ -201,6 +201,16 @@ fn number_feature(number: &str) -> Option<&'static str> {
     }
 }
 
+/// Builds the firmware with the given primitive features instead of the scene's own (for
+/// checking that a mismatch fails the build); returns the ELF path or the build's errors.
+pub fn build_with_primitives(options: &FirmwareOptions, primitive_features: &[&str]) -> Result<PathBuf, String> {
+    check_options(options)?;
+    setup::ensure_tools(options.board.rust_target())?;
+    let scene = options.scene.canonicalize().map_err(|error| format!("scene {}: {error}", options.scene.display()))?;
+    let _guard = BUILD_LOCK.lock().unwrap_or_else(|poisoned| poisoned.into_inner());
+    build(options, &scene, primitive_features)
+}
+
 /// `cargo build --release` of the firmware; returns the ELF.
 fn build(options: &FirmwareOptions, scene: &Path, primitive_features: &[&str]) -> Result<PathBuf, String> {
     let firmware = crate::firmware_dir();

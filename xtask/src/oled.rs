@@ -87,3 +87,31 @@ pub fn read_png(path: &Path) -> Result<GreyImage, String> {
     pixels.truncate(width * height);
     Ok(GreyImage { width, height, pixels })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn screendump_blocks_become_oled_pixels() {
+        // An 8x4 screen (2x1 OLED pixels): the left block grey 3 (51), the right grey 15 (255).
+        let mut ppm = b"P6\n8 4\n255\n".to_vec();
+        for _y in 0..4 {
+            for x in 0..8 {
+                let value = if x < 4 { 51 } else { 255 };
+                ppm.extend_from_slice(&[value, value, value]);
+            }
+        }
+        let image = downsample_screendump(&ppm).unwrap();
+        assert_eq!(image, GreyImage { width: 2, height: 1, pixels: vec![51, 255] });
+    }
+
+    #[test]
+    fn png_round_trips() {
+        let image = GreyImage { width: 3, height: 2, pixels: vec![0, 17, 34, 51, 238, 255] };
+        let path = std::env::temp_dir().join(format!("xtask-oled-test-{}.png", std::process::id()));
+        write_png(&path, &image).unwrap();
+        assert_eq!(read_png(&path).unwrap(), image);
+        let _ = std::fs::remove_file(&path);
+    }
+}
