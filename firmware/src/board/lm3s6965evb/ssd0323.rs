@@ -24,9 +24,11 @@ pub type ScreenCopy = [[u8; BYTES_PER_ROW]; HEIGHT];
 const SET_COLUMN_WINDOW: u8 = 0x15;
 const SET_ROW_WINDOW: u8 = 0x75;
 
-/// Power-on set-up for the RIT P14201 panel of the EK-LM3S6965 (after TI's rit128x96x4 driver):
-/// display off, segment remap, start line, offset, normal display, multiplex 64 rows,
-/// phase length, row period, clock, display on. QEMU accepts and ignores all but on/off.
+/// A power-on set-up for the board's RIT P14201 panel in the manner of TI's rit128x96x4 driver:
+/// display off, segment remap, start line, offset, normal display, multiplex 64 rows, phase
+/// length, row period, clock, pre-charge, VCOMH, display on. QEMU accepts all of these and
+/// ignores the set-up ones (shared/research/qemu.md), so their values are untested on real hardware; in
+/// particular the remap byte decides the nibble order this driver assumes (high = left).
 const INITIALISATION: [u8; 21] = [
     0xAE, // display off
     0xA0, 0x52, // remap: column address and nibble order as the panel is wired
