@@ -562,3 +562,21 @@ fn fixed_multiplication_is_exactly_rounded() {
         assert_eq!(got, expected, "{a} * {b}");
     }
 }
+
+/// `Fixed::dot3` (one rounding of the exact sum) against an exact 128-bit reference, on both of
+/// its paths (components below 2²⁷ and beyond).
+#[cfg(feature = "fixed-point")]
+#[test]
+fn fixed_dot3_is_exactly_rounded() {
+    let mut rng = Rng(0x5555_AAAA_1234_4321);
+    for i in 0..300_000 {
+        let largest = if i % 3 == 0 { 64 } else { 60 };
+        let mut raw = || (rng.next_u64() as i64) >> (64 - largest + (rng.next_u64() % largest as u64) as u32).min(63);
+        let a: [i64; 3] = core::array::from_fn(|_| raw());
+        let b: [i64; 3] = core::array::from_fn(|_| raw());
+        let got = Fixed::dot3(a.map(Fixed::from_bits), b.map(Fixed::from_bits)).to_bits();
+        let sum: i128 = (0..3).map(|k| i128::from(a[k]) * i128::from(b[k])).fold(0i128, |s, p| s.saturating_add(p));
+        let expected = (sum.saturating_add(1 << 31) >> 32).clamp(i128::from(i64::MIN), i128::from(i64::MAX)) as i64;
+        assert_eq!(got, expected, "{a:?} · {b:?}");
+    }
+}
