@@ -370,7 +370,10 @@ const SCENES: [(&str, &[u8]); 2] =
 fn description(text: &[u8]) -> Box<SceneDescription<MAX_OBJECTS>> {
     match microtrace::parser::parse::<MAX_OBJECTS>(text) {
         Ok(description) => Box::new(description),
-        Err(_) => minimal_reader(core::str::from_utf8(text).unwrap()),
+        Err(error) => {
+            println!("(parser: {error}; using the test's minimal reader)");
+            minimal_reader(core::str::from_utf8(text).unwrap())
+        }
     }
 }
 

@@ -4,18 +4,26 @@
 //! - [`Fixed`] (`NAME = "fixed"`, the recommended one): Q32.32 in an `i64` ([`I32F32`]).
 //!   Range ±2³¹ (≈ ±2.1·10⁹), resolution 2⁻³² (≈ 2.3·10⁻¹⁰). Wide enough that the tracer's
 //!   one-type-for-everything design works unchanged: world coordinates up to ±26 000 and their
-//!   squares fit, and unit directions scaled by 1/radius into object space keep ≥ 20
-//!   significant bits. Multiplication is a 64×64→128-bit product built from four 32×32→64
-//!   `UMULL`s; addition is `ADDS`/`ADC` plus a saturation check.
+//!   squares fit, and unit directions scaled by 1/radius into object space keep ≥ 25
+//!   significant bits. Both thesis scenes render pixel-identical to `f64` at 128x64 and at
+//!   full size. Multiplication and `dot3` form exact 128-bit products from 32×32→64 multiplies
+//!   (`SMULL`/`UMULL`/`MLA`) and round once; division is Knuth's algorithm D on 32-bit digits
+//!   using the 32-bit hardware `UDIV`; the square root is `u64::isqrt` of the normalised value.
 //! - [`Fixed16`] (`NAME = "fixed16"`, for comparison): Q16.16 in an `i32` ([`I16F16`]) with
 //!   64-bit intermediate products, a `dot3` that accumulates three exact products before one
-//!   rounding, and a `length3`/`sqrt` through an exact 64-bit integer square root. Cheaper per
-//!   operation (one `SMULL`), but a unit direction is only good to 2⁻¹⁶ and object-space
-//!   directions (scaled by 1/radius) lose most of their bits; see the tests for the cost.
+//!   rounding, and a `length3`/`sqrt` through an exact 64-bit integer square root. About 2.5x
+//!   cheaper per pixel than `Fixed` on Cortex-M3, but a unit direction is only good to 2⁻¹⁶ and
+//!   object-space directions (scaled by 1/radius) lose most of their bits: about 1 % of
+//!   silhouette rays flip on the snooker balls, and the images have speckles.
+//!
+//! Measured on Cortex-M3 (QEMU lm3s6965evb, `-icount`, instructions, `opt-level = "s"`, LTO),
+//! per operation including the call: `Fixed` add 12, mul 43, dot3 ≈ 135, div 240, sqrt 217;
+//! software `f32` add 77, mul 48, dot3 ≈ 320, div 178, sqrt (libm) 172; `Fixed16` add 2,
+//! mul 15, dot3 ≈ 40, div 165, sqrt 170.
 //!
 //! Both saturate instead of wrapping: every operator is implemented on the raw bits with
-//! explicit saturating or checked integer operations, never with `fixed`'s own operators (which
-//! panic on overflow in debug builds). Nothing here can panic.
+//! explicit saturating, checked or provably non-overflowing integer operations, never with
+//! `fixed`'s own operators (which panic on overflow in debug builds). Nothing here can panic.
 
 use core::fmt;
 use core::ops::{Add, Mul, Neg, Sub};
