@@ -137,3 +137,16 @@ fn a_scene_needing_a_primitive_left_out_does_not_build() {
     let error = firmware::build_with_primitives(&options, &["cube"]).unwrap_err();
     assert!(error.contains("without the `sphere` feature"), "unexpected error: {error}");
 }
+
+/// The instruction count (the QEMU plugin's) is the same run to run.
+#[test]
+fn the_instruction_count_is_deterministic() {
+    let counts: Vec<u64> = (0..2)
+        .map(|attempt| {
+            let out = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("firmware/repeat-{attempt}"));
+            let options = FirmwareOptions::new(scene_path("snooker.mts"), Board::Mps2An386, "f32", out);
+            firmware::run(&options).unwrap_or_else(|error| panic!("{error}")).numbers["instructions"]
+        })
+        .collect();
+    assert_eq!(counts[0], counts[1]);
+}
