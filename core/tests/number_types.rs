@@ -365,58 +365,8 @@ const MAX_OBJECTS: usize = 512;
 const SCENES: [(&str, &[u8]); 2] =
     [("snooker", include_bytes!("../../scenes/snooker.mts")), ("lattice", include_bytes!("../../scenes/lattice.mts"))];
 
-/// The scene through the real parser; until the parser lands, through a minimal reader of the
-/// statements the two thesis scenes use.
 fn description(text: &[u8]) -> Box<SceneDescription<MAX_OBJECTS>> {
-    match microtrace::parser::parse::<MAX_OBJECTS>(text) {
-        Ok(description) => Box::new(description),
-        Err(error) => {
-            println!("(parser: {error}; using the test's minimal reader)");
-            minimal_reader(core::str::from_utf8(text).unwrap())
-        }
-    }
-}
-
-fn minimal_reader(text: &str) -> Box<SceneDescription<MAX_OBJECTS>> {
-    use microtrace::scene::{Light, ObjectDescription, Primitive, Projection, Viewport, Window};
-    use microtrace::shading::Rgb4;
-    let mut scene = Box::<SceneDescription<MAX_OBJECTS>>::default();
-    for (index, line) in text.lines().enumerate() {
-        let words: Vec<&str> = line.split('#').next().unwrap().split_whitespace().collect();
-        let Some((&keyword, arguments)) = words.split_first() else { continue };
-        let f = |i: usize| arguments[i].parse::<f64>().unwrap();
-        let object = scene.objects.last_mut();
-        match keyword {
-            "viewport" => scene.viewport = Viewport { x1: f(0) as u16, x2: f(1) as u16, y1: f(2) as u16, y2: f(3) as u16 },
-            "window" => scene.window = Window { x1: f(0), x2: f(1), y1: f(2), y2: f(3) },
-            "viewplane" => scene.view_plane = f(0),
-            "perspective" => scene.projection = Projection::Perspective { eye: [f(0), f(1), f(2)] },
-            "light" if arguments[0] == "point" => scene.light = Light::Point([f(1), f(2), f(3)]),
-            "ambient" => scene.ambient = f(0),
-            "shadows" => scene.shadows = arguments[0] == "on",
-            "dither" => scene.dither = arguments[0] == "on",
-            "background" => scene.background = f(0) as u8,
-            "group" => {
-                let cell = Rgb4::new(f(1) as u8, f(2) as u8, f(3) as u8);
-                if arguments[4] == "up" { scene.palette.set_group_up(f(0) as u8, cell) } else { scene.palette.set_group_down(f(0) as u8, cell) }
-            }
-            "sphere" | "cylinder" | "cube" | "cone" => {
-                let primitive = Primitive::ALL.into_iter().find(|p| p.name() == keyword).unwrap();
-                scene.objects.push(ObjectDescription::new(primitive, index as u32 + 1)).unwrap();
-            }
-            "scale" => object.unwrap().world_from_object.scale([f(0), f(1), f(2)]),
-            "translate" => object.unwrap().world_from_object.translate([f(0), f(1), f(2)]),
-            "rotate" => object.unwrap().world_from_object.rotate("xyz".find(arguments[0]).unwrap(), f(1)),
-            "colour" => object.unwrap().material.colour = f(0) as u8,
-            "ka" => object.unwrap().material.ka = f(0),
-            "kd" => object.unwrap().material.kd = f(0),
-            "ks" => object.unwrap().material.ks = f(0),
-            "pwr" => object.unwrap().material.pwr = f(0),
-            "rnd" => object.unwrap().material.rnd = f(0),
-            other => panic!("line {}: the minimal reader does not know {other}", index + 1),
-        }
-    }
-    scene
+    Box::new(microtrace::parser::parse::<MAX_OBJECTS>(text).unwrap())
 }
 
 fn render<N: Number>(description: &SceneDescription<MAX_OBJECTS>) -> Vec<u8> {
