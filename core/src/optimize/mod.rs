@@ -1,25 +1,147 @@
 //! The four screen-space optimizations for primary rays (§4.7): Pixelbuffer, Extents, Grid and
-//! Sortlist. Each only skips work whose result is known, so every combination renders the same
-//! image as none.
+//! Sortlist, plus shadow-ray culling. Each only skips work whose result is known, so every
+//! combination renders the same image as none (see docs/optimizations.md).
+//!
+//! One file per concept: [`bounding_volume`] (the four stored unit volumes, transformed on
+//! demand), [`projection`] (`projectvolume`), [`extents`], [`grid`], [`sortlist`],
+//! [`pixelbuffer`] (the fill) and [`shadow`].
+
+pub mod bounding_volume;
+pub mod extents;
+pub mod grid;
+pub mod pixelbuffer;
+pub mod projection;
+pub mod shadow;
+pub mod sortlist;
 
 use crate::camera::{Camera, PixelPosition};
+use crate::geometry::{AffineTransform, Vector3};
 use crate::number::Number;
 use crate::scene::{ObjectDescription, Optimizations};
 
-/// What the optimizations derive from the objects' bounding volumes at preprocess time.
+use bounding_volume::ObjectGeometry;
+use extents::Extent;
+use grid::Grid;
+use projection::Screen;
+use shadow::ShadowBound;
+
+/// What the optimizations derive per object from the bounding volumes at preprocess time.
+/// Per object: its place in the test order (`u16`), its extent (4 `u16`), a depth bound (`N`)
+/// and a shadow bounding sphere (4 `N`); per scene: the grid.
 #[derive(Debug, Clone)]
 pub struct Acceleration<N, const MAX_OBJECTS: usize> {
-    object_count: usize,
-    _number: core::marker::PhantomData<N>,
+    count: usize,
+    optimizations: Optimizations,
+    screen: Screen,
+    /// Test order: sorted by depth bound with Sortlist, object order otherwise.
+    order: [u16; MAX_OBJECTS],
+    extents: [Extent; MAX_OBJECTS],
+    /// Lower bound of the `t` of any hit on each object (`−N::MAX`: none known).
+    near: [N; MAX_OBJECTS],
+    shadow: [ShadowBound<N>; MAX_OBJECTS],
+    grid: Grid<MAX_OBJECTS>,
 }
 
 impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
-    pub fn build(_camera: &Camera<N>, _optimizations: Optimizations, objects: &[ObjectDescription]) -> Self {
-        Self { object_count: objects.len().min(MAX_OBJECTS), _number: core::marker::PhantomData }
+    /// The thesis's `preprocess` for the optimizations (digest §8.2).
+    pub fn build(camera: &Camera<N>, optimizations: Optimizations, objects: &[ObjectDescription]) -> Self {
+        let count = objects.len().min(MAX_OBJECTS).min(usize::from(u16::MAX));
+        let screen = Screen::new(camera);
+        let mut acceleration = Self {
+            count,
+            optimizations,
+            screen,
+            order: core::array::from_fn(|i| i as u16),
+            extents: [Extent::whole(&screen); MAX_OBJECTS],
+            near: [-N::MAX; MAX_OBJECTS],
+            shadow: [ShadowBound::always(); MAX_OBJECTS],
+            grid: Grid::inactive(),
+        };
+        let corners = window_corners(&screen, camera);
+        for (index, description) in objects.iter().take(count).enumerate() {
+            // The geometry as the tracer will see it: the inverse rounded to N, inverted back.
+            let geometry = description
+                .world_from_object
+                .affine_inverse()
+                .and_then(|inverse| ObjectGeometry::new(description.primitive, &AffineTransform::<N>::from_matrix(&inverse)));
+            let Some(geometry) = geometry else { continue };
+            if optimizations.extents || optimizations.grid {
+                let volume = geometry.volume();
+                acceleration.extents[index] = Extent::of(&screen, screen.project_volume(&volume).as_ref());
+            }
+            if optimizations.sortlist {
+                if let Some(bound) = sortlist::depth_bound(&screen, &corners, &geometry) {
+                    acceleration.near[index] = N::from_f64(bound);
+                }
+            }
+            let (centre, radius) = geometry.bounding_sphere();
+            acceleration.shadow[index] = ShadowBound::new(centre, radius);
+        }
+        if optimizations.sortlist {
+            let near = acceleration.near;
+            sortlist::sort_by_bound(&mut acceleration.order[..count], |i| near[i]);
+        }
+        if optimizations.grid {
+            acceleration.grid = Grid::build(screen.width, screen.height, &acceleration.order[..count], &acceleration.extents[..count]);
+        }
+        acceleration
     }
 
-    /// The objects a primary ray through `pixel` must be tested against, in test order.
-    pub fn candidates(&self, _pixel: PixelPosition) -> impl Iterator<Item = usize> + '_ {
-        0..self.object_count
+    /// The objects a primary ray through `pixel` is tested against, in test order: the pixel's
+    /// grid cell list with Grid, every object otherwise.
+    #[inline]
+    pub fn candidates(&self, pixel: PixelPosition) -> &[u16] {
+        if self.grid.active {
+            self.grid.cell(pixel.column, pixel.row)
+        } else {
+            &self.order[..self.count]
+        }
     }
+
+    /// Extents: whether the pixel lies outside the object's rectangle (skip it untested).
+    #[inline]
+    pub fn outside_extent(&self, object: usize, pixel: PixelPosition) -> bool {
+        self.optimizations.extents && self.extents.get(object).is_some_and(|extent| !extent.contains(pixel.column, pixel.row))
+    }
+
+    /// Sortlist: whether every hit on `object` (and so on every later candidate) lies beyond
+    /// the nearest hit so far, `t`. Strict, so an equal `t` is still tested.
+    #[inline]
+    pub fn beyond(&self, object: usize, t: N) -> bool {
+        self.optimizations.sortlist && self.near.get(object).is_some_and(|near| *near > t)
+    }
+
+    /// Whether a shadow ray's segment may meet `object` (its bounding sphere).
+    #[inline]
+    pub fn may_shadow(&self, object: usize, point: Vector3<N>, direction: Vector3<N>, length: N) -> bool {
+        self.shadow.get(object).is_none_or(|bound| bound.may_block(point, direction, length))
+    }
+
+    pub fn screen(&self) -> &Screen {
+        &self.screen
+    }
+
+    pub fn optimizations(&self) -> Optimizations {
+        self.optimizations
+    }
+
+    /// Whether the grid is in use (on, and its pool did not overflow).
+    pub fn grid_active(&self) -> bool {
+        self.grid.active
+    }
+
+    /// Entries over all grid cells.
+    pub fn grid_entries(&self) -> usize {
+        self.grid.entries()
+    }
+
+    pub fn extent(&self, object: usize) -> Option<Extent> {
+        self.extents.get(object).copied()
+    }
+}
+
+/// The view-plane window's corners in world space (the parallel rays' extreme origins).
+fn window_corners<N: Number>(screen: &Screen, camera: &Camera<N>) -> [[f64; 3]; 4] {
+    let (w, h) = (screen.width - 1, screen.height - 1);
+    [(0, 0), (w, 0), (0, h), (w, h)].map(|(c, r)| camera.view_plane_point(camera.pixel(c, r)).to_f64())
 }

@@ -7,7 +7,7 @@ mod statistics;
 mod trace;
 
 pub use primary::{nearest_hit, NearestHit};
-pub use shadow::in_shadow;
+pub use shadow::{in_shadow, in_shadow_cached, ShadowCache};
 pub use statistics::Statistics;
 pub use trace::{render_pga, render_rgb, shade_pixel, ShadedPixel};
 

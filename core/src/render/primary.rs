@@ -1,4 +1,7 @@
-//! The nearest hit of a primary ray (the loop of `raycast`, digest §4.8).
+//! The nearest hit of a primary ray (the loop of `raycast`, digest §4.8), with the
+//! optimizations: Grid picks the candidate list, Extents skips candidates whose rectangle
+//! excludes the pixel (checked first, as in the thesis), Sortlist ends the loop once the next
+//! candidate's depth bound exceeds the nearest hit.
 //!
 //! Exact ties go to the object that comes first in the scene, whatever order the candidates
 //! are tested in, so reordering optimizations (Grid, Sortlist) cannot change the image; the
@@ -25,14 +28,24 @@ pub fn nearest_hit<N: Number, const MAX_OBJECTS: usize>(
     pixel: PixelPosition,
     statistics: &mut Statistics,
 ) -> Option<NearestHit<N>> {
+    let acceleration = &scene.acceleration;
     let mut nearest: Option<NearestHit<N>> = None;
-    for index in scene.acceleration.candidates(pixel) {
-        let Some(object) = scene.objects.get(index) else { continue };
+    for &candidate in acceleration.candidates(pixel) {
+        let index = usize::from(candidate);
+        if acceleration.outside_extent(index, pixel) {
+            continue;
+        }
         let interval = match nearest {
             None => Interval::unbounded(),
-            // An equal t wins only for an object earlier in the scene.
-            Some(best) => Interval { max: best.t, include_max: index < best.object },
+            Some(best) => {
+                if acceleration.beyond(index, best.t) {
+                    break;
+                }
+                // An equal t wins only for an object earlier in the scene.
+                Interval { max: best.t, include_max: index < best.object }
+            }
         };
+        let Some(object) = scene.objects.get(index) else { continue };
         statistics.ro_tests += 1;
         let local_ray = object.object_from_world.ray(ray);
         if let Some(hit) = object.primitive.intersect(&local_ray, interval) {

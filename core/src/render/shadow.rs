@@ -2,12 +2,24 @@
 //! by the light's distance for a point light. The shaded object itself is skipped: a convex
 //! closed primitive cannot shadow its own lit side, and skipping it makes shadow acne
 //! impossible without any epsilon.
+//!
+//! Beyond the thesis (which tested every other object): an object is tested only when the
+//! shadow ray's segment passes through its bounding sphere (`optimize::shadow`), and the object
+//! that blocked the previous shadow ray is tried first (a shadow cache). Both only skip tests
+//! whose answer is known or reorder tests of a yes/no question, so the image is unchanged.
+//! They are on whenever any optimization is on.
 
 use super::Statistics;
 use crate::geometry::{Ray, Vector3};
 use crate::number::Number;
 use crate::scene::Scene;
 use crate::shapes::Interval;
+
+/// The object that blocked the last shadow ray, tried first by the next one.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ShadowCache {
+    pub last_blocker: Option<u16>,
+}
 
 pub fn in_shadow<N: Number, const MAX_OBJECTS: usize>(
     scene: &Scene<N, MAX_OBJECTS>,
@@ -17,15 +29,47 @@ pub fn in_shadow<N: Number, const MAX_OBJECTS: usize>(
     light_distance: N,
     statistics: &mut Statistics,
 ) -> bool {
+    in_shadow_cached(scene, shaded_object, point, to_light, light_distance, statistics, &mut ShadowCache::default())
+}
+
+pub fn in_shadow_cached<N: Number, const MAX_OBJECTS: usize>(
+    scene: &Scene<N, MAX_OBJECTS>,
+    shaded_object: usize,
+    point: Vector3<N>,
+    to_light: Vector3<N>,
+    light_distance: N,
+    statistics: &mut Statistics,
+    cache: &mut ShadowCache,
+) -> bool {
     statistics.shadow_rays += 1;
     let ray = Ray { origin: point, direction: to_light };
     let interval = Interval::below(light_distance);
-    for (index, object) in scene.objects.iter().enumerate() {
+    let o = scene.optimizations;
+    let cull = o.pixelbuffer || o.extents || o.grid || o.sortlist;
+    let acceleration = &scene.acceleration;
+    let blocks = |index: usize, statistics: &mut Statistics| -> bool {
         if index == shaded_object {
+            return false;
+        }
+        if cull && !acceleration.may_shadow(index, point, to_light, light_distance) {
+            return false;
+        }
+        let Some(object) = scene.objects.get(index) else { return false };
+        statistics.shadow_tests += 1;
+        object.primitive.occluded(&object.object_from_world.ray(&ray), interval)
+    };
+    let first = if cull { cache.last_blocker.map(usize::from) } else { None };
+    if let Some(index) = first {
+        if blocks(index, statistics) {
+            return true;
+        }
+    }
+    for index in 0..scene.objects.len() {
+        if Some(index) == first {
             continue;
         }
-        statistics.shadow_tests += 1;
-        if object.primitive.occluded(&object.object_from_world.ray(&ray), interval) {
+        if blocks(index, statistics) {
+            cache.last_blocker = Some(index as u16);
             return true;
         }
     }

@@ -111,7 +111,9 @@ fn rgb_mode_adds_light_and_reflects_one_minus_cmy() {
 
 #[test]
 fn statistics_count_pixels_rays_and_tests() {
-    let description = sphere_scene(Material::default(), Light::Direction([0.0, 0.0, 1.0]));
+    let mut description = sphere_scene(Material::default(), Light::Direction([0.0, 0.0, 1.0]));
+    // Unoptimized: every pixel gets a ray and every ray tests the one object.
+    description.optimizations = crate::scene::Optimizations::NONE;
     let scene = Scene::<f64, 4>::prepare(&description).unwrap();
     let mut sink = MockSink::<u8, 5, 5>::new(0);
     let mut statistics = Statistics::default();

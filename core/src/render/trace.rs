@@ -1,7 +1,11 @@
 //! Tracing a whole image, top row first (digest §3.4), into a [`PixelSink`].
 
-use super::{in_shadow, nearest_hit, Statistics};
+use super::shadow::{in_shadow_cached, ShadowCache};
+use super::{nearest_hit, Statistics};
 use crate::camera::PixelPosition;
+use crate::optimize::bounding_volume::ObjectGeometry;
+use crate::optimize::extents::Extent;
+use crate::optimize::pixelbuffer::hull_span;
 use crate::number::Number;
 use crate::pixel::{PixelSink, PixelSource, Rgb888};
 use crate::scene::{PreparedLight, PreparedMaterial, Scene};
@@ -19,6 +23,15 @@ pub fn shade_pixel<N: Number, const MAX_OBJECTS: usize>(
     scene: &Scene<N, MAX_OBJECTS>,
     pixel: PixelPosition,
     statistics: &mut Statistics,
+) -> ShadedPixel<N> {
+    shade_pixel_cached(scene, pixel, statistics, &mut ShadowCache::default())
+}
+
+fn shade_pixel_cached<N: Number, const MAX_OBJECTS: usize>(
+    scene: &Scene<N, MAX_OBJECTS>,
+    pixel: PixelPosition,
+    statistics: &mut Statistics,
+    cache: &mut ShadowCache,
 ) -> ShadedPixel<N> {
     let Some(ray) = scene.camera.primary_ray(pixel) else { return ShadedPixel::Background };
     statistics.rays_traced += 1;
@@ -42,7 +55,7 @@ pub fn shade_pixel<N: Number, const MAX_OBJECTS: usize>(
     };
     // A surface facing away from the light is unlit with or without a shadow ray.
     let faces_light = normal.dot(to_light) > N::ZERO;
-    let shadowed = scene.shadows && faces_light && in_shadow(scene, hit.object, point, to_light, light_distance, statistics);
+    let shadowed = scene.shadows && faces_light && in_shadow_cached(scene, hit.object, point, to_light, light_distance, statistics, cache);
     ShadedPixel::Surface {
         material: object.material,
         lighting: lighting(normal, to_light, ray.direction, object.material.power, shadowed),
@@ -56,7 +69,7 @@ where
     N: Number,
     S: PixelSink<u8> + PixelSource<u8>,
 {
-    render(scene, sink, statistics, scene.background, |material, lighting, pixel| {
+    render(scene, sink, statistics, scene.background, (PGA_FILL, PGA_FILL ^ 0xFF), |material, lighting, pixel| {
         pga_index(material, lighting, &scene.constants, scene.dither, pixel)
     })
 }
@@ -67,33 +80,98 @@ where
     N: Number,
     S: PixelSink<Rgb888> + PixelSource<Rgb888>,
 {
-    render(scene, sink, statistics, scene.background_rgb(), |material, lighting, pixel| {
+    render(scene, sink, statistics, scene.background_rgb(), (RGB_FILL, RGB_FILL.map(|c| c ^ 0xFF)), |material, lighting, pixel| {
         rgb_pixel(material, lighting, &scene.constants, scene.dither, pixel)
     })
 }
+
+/// Pixelbuffer's fill colour in PGA mode (the thesis's default `fillcolor`); the flood is its
+/// complement, so the two always differ.
+pub const PGA_FILL: u8 = 112;
+/// Pixelbuffer's fill colour in RGB mode; the flood is its complement.
+pub const RGB_FILL: [u8; 3] = [112, 0, 255];
+
+/// Pixels read back per `read_row` call (a stack buffer; no row-sized buffer is needed).
+const READ_CHUNK: usize = 32;
 
 fn render<N, P, S, const MAX_OBJECTS: usize>(
     scene: &Scene<N, MAX_OBJECTS>,
     sink: &mut S,
     statistics: &mut Statistics,
     background: P,
+    (fill, flood): (P, P),
     colour: impl Fn(&PreparedMaterial<N>, Lighting<N>, PixelPosition) -> P,
 ) where
     N: Number,
-    P: Copy,
+    P: Copy + PartialEq,
     S: PixelSink<P> + PixelSource<P>,
 {
     let camera = &scene.camera;
+    let pixelbuffer = scene.optimizations.pixelbuffer;
+    if pixelbuffer {
+        fill_volumes(scene, sink, fill, flood);
+    }
+    let mut cache = ShadowCache::default();
+    let mut chunk = [fill; READ_CHUNK];
     for row in 0..camera.height() {
         for column in 0..camera.width() {
             let pixel = camera.pixel(column, row);
             statistics.pixels += 1;
-            let value = match shade_pixel(scene, pixel, statistics) {
+            if pixelbuffer {
+                // Read the row back a chunk at a time, each chunk before any of it is written.
+                let offset = usize::from(column) % READ_CHUNK;
+                if offset == 0 {
+                    chunk = [fill; READ_CHUNK];
+                    let length = usize::from(camera.width() - column).min(READ_CHUNK);
+                    sink.read_row(column, row, &mut chunk[..length]);
+                }
+                // Only a pixel that still holds the flood colour was never filled.
+                if chunk[offset] == flood {
+                    sink.set_pixel(column, row, background);
+                    continue;
+                }
+            }
+            let value = match shade_pixel_cached(scene, pixel, statistics, &mut cache) {
                 ShadedPixel::Background => background,
                 ShadedPixel::Surface { material, lighting } => colour(&material, lighting, pixel),
             };
             sink.set_pixel(column, row, value);
         }
         sink.row_done(row);
+    }
+}
+
+/// Pixelbuffer's preprocess (`initpga` and `rendervolume`): flood the viewport, then fill
+/// every object's projected bounding volume, row span by row span.
+fn fill_volumes<N, P, S, const MAX_OBJECTS: usize>(scene: &Scene<N, MAX_OBJECTS>, sink: &mut S, fill: P, flood: P)
+where
+    N: Number,
+    P: Copy,
+    S: PixelSink<P>,
+{
+    let screen = scene.acceleration.screen();
+    let (width, height) = (screen.width, screen.height);
+    for row in 0..height {
+        sink.fill_row(0, row, width, flood);
+    }
+    for object in scene.objects.iter() {
+        let projected = ObjectGeometry::new(object.primitive, &object.object_from_world)
+            .and_then(|geometry| screen.project_volume(&geometry.volume()));
+        let Some(points) = projected else {
+            // No projection (at or behind the eye, or rays along the view plane): everything.
+            for row in 0..height {
+                sink.fill_row(0, row, width, fill);
+            }
+            continue;
+        };
+        let extent = Extent::of(screen, Some(&points));
+        if extent.is_empty() {
+            continue;
+        }
+        for row in extent.first_row..=extent.last_row {
+            if let Some((first, last)) = hull_span(&points, row, width) {
+                sink.fill_row(first, row, last - first + 1, fill);
+            }
+        }
     }
 }

@@ -1,0 +1,149 @@
+//! The four stored bounding volumes of §4.7.1 (RTRACE.C `volume[4][8]`), one per primitive
+//! type, transformed to world space on demand (`transformvolume`) and never stored per object.
+
+use crate::geometry::{AffineTransform, Matrix4};
+use crate::number::Number;
+use crate::scene::Primitive;
+
+/// The 8 vertices of each primitive's unit volume, in the thesis's order (digest §8.1).
+pub const VOLUMES: [[[f64; 3]; 8]; 4] = [
+    // cube: the cube itself
+    [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [1.0, 0.0, 1.0], [1.0, 1.0, 1.0], [0.0, 1.0, 1.0]],
+    // sphere: the 2x2x2 box
+    [[-1.0, -1.0, -1.0], [1.0, -1.0, -1.0], [1.0, 1.0, -1.0], [-1.0, 1.0, -1.0], [-1.0, -1.0, 1.0], [1.0, -1.0, 1.0], [1.0, 1.0, 1.0], [-1.0, 1.0, 1.0]],
+    // cylinder: 2x2x1, back face at z = 0
+    [[-1.0, -1.0, 0.0], [1.0, -1.0, 0.0], [1.0, 1.0, 0.0], [-1.0, 1.0, 0.0], [-1.0, -1.0, 1.0], [1.0, -1.0, 1.0], [1.0, 1.0, 1.0], [-1.0, 1.0, 1.0]],
+    // cone: a pyramid, the apex repeated four times
+    [[0.0, 0.0, 0.0], [0.0, 0.0, 0.0], [0.0, 0.0, 0.0], [0.0, 0.0, 0.0], [-1.0, -1.0, 1.0], [1.0, -1.0, 1.0], [1.0, 1.0, 1.0], [-1.0, 1.0, 1.0]],
+];
+
+/// The faces of each unit volume as half-spaces `n·q ≤ c` in object space (for depth bounds).
+/// Unused slots repeat a face.
+const FACES: [[([f64; 3], f64); 6]; 4] = [
+    [([1.0, 0.0, 0.0], 1.0), ([-1.0, 0.0, 0.0], 0.0), ([0.0, 1.0, 0.0], 1.0), ([0.0, -1.0, 0.0], 0.0), ([0.0, 0.0, 1.0], 1.0), ([0.0, 0.0, -1.0], 0.0)],
+    [([1.0, 0.0, 0.0], 1.0), ([-1.0, 0.0, 0.0], 1.0), ([0.0, 1.0, 0.0], 1.0), ([0.0, -1.0, 0.0], 1.0), ([0.0, 0.0, 1.0], 1.0), ([0.0, 0.0, -1.0], 1.0)],
+    [([1.0, 0.0, 0.0], 1.0), ([-1.0, 0.0, 0.0], 1.0), ([0.0, 1.0, 0.0], 1.0), ([0.0, -1.0, 0.0], 1.0), ([0.0, 0.0, 1.0], 1.0), ([0.0, 0.0, -1.0], 0.0)],
+    [([0.0, 0.0, 1.0], 1.0), ([1.0, 0.0, -1.0], 0.0), ([-1.0, 0.0, -1.0], 0.0), ([0.0, 1.0, -1.0], 0.0), ([0.0, -1.0, -1.0], 0.0), ([0.0, 0.0, 1.0], 1.0)],
+];
+
+fn type_index(primitive: Primitive) -> usize {
+    match primitive {
+        Primitive::Cube => 0,
+        Primitive::Sphere => 1,
+        Primitive::Cylinder => 2,
+        Primitive::Cone => 3,
+    }
+}
+
+/// An object's geometry as the tracer renders it: the forward transform recovered in `f64`
+/// from the inverse the tracer holds in its number type (so the volumes bound what is actually
+/// intersected, rounding included), and that inverse in `f64`.
+#[derive(Clone, Copy, Debug)]
+pub struct ObjectGeometry {
+    pub primitive: Primitive,
+    pub world_from_object: Matrix4,
+    pub object_from_world: Matrix4,
+}
+
+impl ObjectGeometry {
+    /// `None` when the inverse cannot be inverted back (then nothing may be culled).
+    pub fn new<N: Number>(primitive: Primitive, object_from_world: &AffineTransform<N>) -> Option<Self> {
+        let mut rows = [[0.0; 4]; 4];
+        for (r, row) in rows.iter_mut().enumerate().take(3) {
+            for c in 0..3 {
+                row[c] = object_from_world.linear[r][c].to_f64();
+            }
+        }
+        for c in 0..3 {
+            rows[3][c] = object_from_world.translation[c].to_f64();
+        }
+        rows[3][3] = 1.0;
+        let inverse = Matrix4 { rows };
+        let forward = inverse.affine_inverse()?;
+        Some(Self { primitive, world_from_object: forward, object_from_world: inverse })
+    }
+
+    /// `transformvolume`: the 8 world-space vertices of the object's bounding volume.
+    pub fn volume(&self) -> [[f64; 3]; 8] {
+        VOLUMES[type_index(self.primitive)].map(|v| self.world_from_object.transform_point(v))
+    }
+
+    /// For a sphere: its centre and the rows of the 3x3 (p = centre + u·M, |u| ≤ 1).
+    pub fn ellipsoid(&self) -> Option<([f64; 3], [[f64; 3]; 3])> {
+        (self.primitive == Primitive::Sphere).then(|| {
+            let m = &self.world_from_object.rows;
+            ([m[3][0], m[3][1], m[3][2]], [[m[0][0], m[0][1], m[0][2]], [m[1][0], m[1][1], m[1][2]], [m[2][0], m[2][1], m[2][2]]])
+        })
+    }
+
+    /// The smallest value of `g·p` over the object's bounding volume (exact over the ellipsoid
+    /// for a sphere, over the vertices otherwise).
+    pub fn min_linear(&self, g: [f64; 3]) -> f64 {
+        if let Some((centre, m)) = self.ellipsoid() {
+            let mg = m.map(|row| dot(row, g));
+            return dot(centre, g) - libm::sqrt(dot(mg, mg));
+        }
+        self.volume().iter().map(|p| dot(*p, g)).fold(f64::INFINITY, f64::min)
+    }
+
+    /// A lower bound of the distance from `eye` to any point of the bounding volume (0 when the
+    /// eye may be inside): the largest signed distance to the volume's face planes, and for a
+    /// sphere also |eye − centre| minus an upper bound of its largest semi-axis.
+    pub fn distance_lower_bound(&self, eye: [f64; 3]) -> f64 {
+        let a = &self.object_from_world.rows;
+        let mut bound: f64 = 0.0;
+        for (n, c) in FACES[type_index(self.primitive)] {
+            // n·q with q = p·A + b is w·p + n·b, w = A n.
+            let w = [0, 1, 2].map(|i| dot([a[i][0], a[i][1], a[i][2]], n));
+            let nb = dot([a[3][0], a[3][1], a[3][2]], n);
+            let length = libm::sqrt(dot(w, w));
+            if length > 0.0 {
+                bound = bound.max((dot(w, eye) + nb - c) / length);
+            }
+        }
+        if let Some((centre, m)) = self.ellipsoid() {
+            let d = [eye[0] - centre[0], eye[1] - centre[1], eye[2] - centre[2]];
+            bound = bound.max(libm::sqrt(dot(d, d)) - largest_semi_axis(&m));
+        }
+        bound
+    }
+
+    /// A sphere containing the bounding volume: (centre, radius).
+    pub fn bounding_sphere(&self) -> ([f64; 3], f64) {
+        let volume = self.volume();
+        let mut low = [f64::INFINITY; 3];
+        let mut high = [f64::NEG_INFINITY; 3];
+        for p in &volume {
+            for k in 0..3 {
+                low[k] = low[k].min(p[k]);
+                high[k] = high[k].max(p[k]);
+            }
+        }
+        let centre = [0, 1, 2].map(|k| (low[k] + high[k]) / 2.0);
+        let radius = volume.iter().map(|p| distance(*p, centre)).fold(0.0, f64::max);
+        if let Some((ellipsoid_centre, m)) = self.ellipsoid() {
+            let semi_axis = largest_semi_axis(&m);
+            if semi_axis < radius {
+                return (ellipsoid_centre, semi_axis);
+            }
+        }
+        (centre, radius)
+    }
+}
+
+/// An upper bound of the largest singular value of `m`: the square root of the largest
+/// Gershgorin row sum of `m·mᵀ` (exact for a rotation times a uniform scale).
+fn largest_semi_axis(m: &[[f64; 3]; 3]) -> f64 {
+    let gram = |i: usize, j: usize| dot(m[i], m[j]);
+    let row_sum = |i: usize| (0..3).map(|j| gram(i, j).abs()).sum::<f64>();
+    libm::sqrt(row_sum(0).max(row_sum(1)).max(row_sum(2))) * (1.0 + 1e-12)
+}
+
+pub fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {
+    let d = [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
+    libm::sqrt(dot(d, d))
+}

@@ -1,0 +1,112 @@
+//! `projectvolume` (digest §8.3): world points onto the view plane along the primary rays, then
+//! to continuous image coordinates (column from the left, row from the top), in `f64`.
+//!
+//! Unlike the thesis, a volume with a vertex at or behind the eye plane (perspective, B16), or
+//! any volume when the parallel direction is parallel to the view plane (B17), has no usable
+//! projection: callers then treat it as covering the whole screen.
+
+use crate::camera::Camera;
+use crate::number::Number;
+
+/// The camera's mapping in `f64`, read back from the number type's own values so that it is
+/// the mapping the primary rays actually use.
+#[derive(Clone, Copy, Debug)]
+pub struct Screen {
+    pub width: u16,
+    pub height: u16,
+    /// View-plane x of column 0 and y of the bottom row, and the spacing between samples
+    /// (0 for a single column or row).
+    x0: f64,
+    y0: f64,
+    spacing_x: f64,
+    spacing_y: f64,
+    pub view_plane: f64,
+    pub view: View,
+}
+
+#[derive(Clone, Copy, Debug)]
+pub enum View {
+    Parallel { direction: [f64; 3] },
+    Perspective { eye: [f64; 3] },
+}
+
+/// Margin in pixels added around every projected shape: covers the rounding of the number
+/// type's rays and intersections (a hit is never found more than a small fraction of a pixel
+/// outside the exact silhouette).
+pub const MARGIN: f64 = 0.5;
+
+impl Screen {
+    pub fn new<N: Number>(camera: &Camera<N>) -> Self {
+        let (width, height) = (camera.width(), camera.height());
+        let first = camera.view_plane_point(camera.pixel(0, height - 1)).to_f64();
+        let last = camera.view_plane_point(camera.pixel(width - 1, 0)).to_f64();
+        let spacing = |from: f64, to: f64, pixels: u16| if pixels > 1 { (to - from) / f64::from(pixels - 1) } else { 0.0 };
+        let view = match (camera.parallel_direction(), camera.eye()) {
+            (Some(direction), _) => View::Parallel { direction: direction.to_f64() },
+            (None, Some(eye)) => View::Perspective { eye: eye.to_f64() },
+            (None, None) => View::Perspective { eye: [0.0; 3] },
+        };
+        Self {
+            width,
+            height,
+            x0: first[0],
+            y0: first[1],
+            spacing_x: spacing(first[0], last[0], width),
+            spacing_y: spacing(first[1], last[1], height),
+            view_plane: first[2],
+            view,
+        }
+    }
+
+    /// The view-plane point a primary ray through world point `p` starts from (parallel) or
+    /// passes through (perspective); `None` when there is none in front of the eye.
+    pub fn project(&self, p: [f64; 3]) -> Option<[f64; 2]> {
+        match self.view {
+            View::Parallel { direction: d } => {
+                if d[2].abs() < 1e-9 {
+                    return None;
+                }
+                let t = (p[2] - self.view_plane) / d[2];
+                Some([p[0] - t * d[0], p[1] - t * d[1]])
+            }
+            View::Perspective { eye: e } => {
+                let span = self.view_plane - e[2];
+                if span == 0.0 {
+                    return None;
+                }
+                let w = (p[2] - e[2]) / span;
+                if !(w > 1e-9) {
+                    return None;
+                }
+                Some([e[0] + (p[0] - e[0]) / w, e[1] + (p[1] - e[1]) / w])
+            }
+        }
+    }
+
+    /// View-plane (x, y) to continuous image (column, row from the top).
+    pub fn to_image(&self, point: [f64; 2]) -> [f64; 2] {
+        let column = if self.spacing_x > 0.0 { (point[0] - self.x0) / self.spacing_x } else { 0.0 };
+        let row = if self.spacing_y > 0.0 { f64::from(self.height - 1) - (point[1] - self.y0) / self.spacing_y } else { 0.0 };
+        [column, row]
+    }
+
+    /// The 8 volume vertices in image coordinates, or `None` for "the whole screen".
+    pub fn project_volume(&self, volume: &[[f64; 3]; 8]) -> Option<[[f64; 2]; 8]> {
+        let mut out = [[0.0; 2]; 8];
+        for (vertex, image) in volume.iter().zip(out.iter_mut()) {
+            *image = self.to_image(self.project(*vertex)?);
+            if !(image[0].is_finite() && image[1].is_finite()) {
+                return None;
+            }
+        }
+        Some(out)
+    }
+
+    /// Inclusive integer range of columns (or rows) within `[low − MARGIN, high + MARGIN]`,
+    /// clipped to `0..count`; `None` when empty.
+    pub fn pixel_range(low: f64, high: f64, count: u16) -> Option<(u16, u16)> {
+        let first = libm::ceil(low - MARGIN).max(0.0);
+        let last = libm::floor(high + MARGIN).min(f64::from(count) - 1.0);
+        (first <= last).then(|| (first as u16, last as u16))
+    }
+}
