@@ -2,7 +2,7 @@
 //! volume, four `u16`s in image coordinates (column from the left, row from the top).
 //! A pixel outside the rectangle skips the object without a ray–object test.
 
-use super::projection::Screen;
+use super::projection::{Projected, Screen};
 
 /// Inclusive rectangle; `first_column > last_column` means empty (never entered).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -22,8 +22,12 @@ impl Extent {
 
     /// The rectangle of projected points (with the projection margin), or the whole screen for
     /// a volume without a projection (digest B16, B17).
-    pub fn of(screen: &Screen, projected: Option<&[[f64; 2]; 8]>) -> Self {
-        let Some(points) = projected else { return Self::whole(screen) };
+    pub fn of(screen: &Screen, projected: &Projected) -> Self {
+        let points = match projected {
+            Projected::Points(points) => points,
+            Projected::Whole => return Self::whole(screen),
+            Projected::Invisible => return Self::EMPTY,
+        };
         let (mut low, mut high) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
         for p in points {
             for k in 0..2 {

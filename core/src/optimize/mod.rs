@@ -67,7 +67,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
             let Some(geometry) = geometry else { continue };
             if optimizations.extents || optimizations.grid {
                 let volume = geometry.volume();
-                acceleration.extents[index] = Extent::of(&screen, screen.project_volume(&volume).as_ref());
+                acceleration.extents[index] = Extent::of(&screen, &screen.project_volume(&volume));
             }
             if optimizations.sortlist {
                 if let Some(bound) = sortlist::depth_bound(&screen, &corners, &geometry) {

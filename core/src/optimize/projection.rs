@@ -24,6 +24,16 @@ pub struct Screen {
     pub view: View,
 }
 
+/// A projected bounding volume.
+#[derive(Clone, Copy, Debug)]
+pub enum Projected {
+    Points([[f64; 2]; 8]),
+    /// No usable projection: may cover any pixel.
+    Whole,
+    /// No primary ray can reach it.
+    Invisible,
+}
+
 #[derive(Clone, Copy, Debug)]
 pub enum View {
     Parallel { direction: [f64; 3] },
@@ -90,16 +100,37 @@ impl Screen {
         [column, row]
     }
 
-    /// The 8 volume vertices in image coordinates, or `None` for "the whole screen".
-    pub fn project_volume(&self, volume: &[[f64; 3]; 8]) -> Option<[[f64; 2]; 8]> {
+    /// The 8 volume vertices in image coordinates; `Whole` when some vertex has no projection.
+    /// A volume wholly behind the rays' origins (every vertex behind the eye plane, or behind
+    /// the parallel view plane, by a margin) is `Invisible`: no primary ray can reach it.
+    pub fn project_volume(&self, volume: &[[f64; 3]; 8]) -> Projected {
+        if volume.iter().all(|p| self.behind(*p)) {
+            return Projected::Invisible;
+        }
         let mut out = [[0.0; 2]; 8];
         for (vertex, image) in volume.iter().zip(out.iter_mut()) {
-            *image = self.to_image(self.project(*vertex)?);
+            let Some(point) = self.project(*vertex) else { return Projected::Whole };
+            *image = self.to_image(point);
             if !(image[0].is_finite() && image[1].is_finite()) {
-                return None;
+                return Projected::Whole;
             }
         }
-        Some(out)
+        Projected::Points(out)
+    }
+
+    /// Whether `p` lies clearly behind where every primary ray starts (so t < 0 for it).
+    fn behind(&self, p: [f64; 3]) -> bool {
+        let margin = 1e-6 * (1.0 + p[2].abs() + self.view_plane.abs());
+        match self.view {
+            View::Parallel { direction: d } => {
+                // t = (p.z − D)/d.z < 0.
+                (d[2] > 1e-9 && p[2] < self.view_plane - margin) || (d[2] < -1e-9 && p[2] > self.view_plane + margin)
+            }
+            View::Perspective { eye: e } => {
+                let span = self.view_plane - e[2];
+                (span > 0.0 && p[2] < e[2] - margin) || (span < 0.0 && p[2] > e[2] + margin)
+            }
+        }
     }
 
     /// Inclusive integer range of columns (or rows) within `[low − MARGIN, high + MARGIN]`,

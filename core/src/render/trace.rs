@@ -6,6 +6,7 @@ use crate::camera::PixelPosition;
 use crate::optimize::bounding_volume::ObjectGeometry;
 use crate::optimize::extents::Extent;
 use crate::optimize::pixelbuffer::hull_span;
+use crate::optimize::projection::Projected;
 use crate::number::Number;
 use crate::pixel::{PixelSink, PixelSource, Rgb888};
 use crate::scene::{PreparedLight, PreparedMaterial, Scene};
@@ -155,16 +156,22 @@ where
         sink.fill_row(0, row, width, flood);
     }
     for object in scene.objects.iter() {
-        let projected = ObjectGeometry::new(object.primitive, &object.object_from_world)
-            .and_then(|geometry| screen.project_volume(&geometry.volume()));
-        let Some(points) = projected else {
-            // No projection (at or behind the eye, or rays along the view plane): everything.
-            for row in 0..height {
-                sink.fill_row(0, row, width, fill);
-            }
-            continue;
+        let projected = match ObjectGeometry::new(object.primitive, &object.object_from_world) {
+            Some(geometry) => screen.project_volume(&geometry.volume()),
+            None => Projected::Whole,
         };
-        let extent = Extent::of(screen, Some(&points));
+        let points = match projected {
+            Projected::Points(points) => points,
+            Projected::Invisible => continue,
+            Projected::Whole => {
+                // No projection (at or behind the eye, or rays along the view plane): all.
+                for row in 0..height {
+                    sink.fill_row(0, row, width, fill);
+                }
+                continue;
+            }
+        };
+        let extent = Extent::of(screen, &projected);
         if extent.is_empty() {
             continue;
         }
