@@ -5,6 +5,13 @@ use crate::geometry::{AffineTransform, Matrix4};
 use crate::number::Number;
 use crate::scene::Primitive;
 
+use super::projection::View;
+
+/// Sides of the polygons circumscribed about the circles of spheres, cylinders and cones.
+pub const SIDES: usize = 16;
+/// Most points a silhouette is built from.
+pub const MAX_POINTS: usize = 2 * SIDES;
+
 /// The 8 vertices of each primitive's unit volume, in the thesis's order (digest §8.1).
 pub const VOLUMES: [[[f64; 3]; 8]; 4] = [
     // cube: the cube itself
@@ -66,6 +73,77 @@ impl ObjectGeometry {
     /// `transformvolume`: the 8 world-space vertices of the object's bounding volume.
     pub fn volume(&self) -> [[f64; 3]; 8] {
         VOLUMES[type_index(self.primitive)].map(|v| self.world_from_object.transform_point(v))
+    }
+
+    /// World points whose convex hull, seen from the view, covers the object's silhouette
+    /// (tighter than the 8-vertex volume): a cube's 8 corners; a cylinder's two cap circles
+    /// and a cone's base circle, each circumscribed by a 16-gon (radius 1/cos(π/16)); for a
+    /// sphere, its rim (the circle where the viewing cone touches it, in object space) likewise
+    /// circumscribed. The cone from the eye (or the parallel prism) through the polygon contains
+    /// the object, so projecting the points gives a conservative silhouette. `None` when the eye
+    /// is inside a sphere.
+    pub fn silhouette_points(&self, view: &View, out: &mut [[f64; 3]; MAX_POINTS]) -> Option<usize> {
+        let grow = 1.0 / libm::cos(core::f64::consts::PI / SIDES as f64) * (1.0 + 1e-9);
+        let ring = |k: usize| {
+            let angle = 2.0 * core::f64::consts::PI * k as f64 / SIDES as f64;
+            (libm::cos(angle) * grow, libm::sin(angle) * grow)
+        };
+        let world = |p: [f64; 3]| self.world_from_object.transform_point(p);
+        match self.primitive {
+            Primitive::Cube => {
+                for (slot, vertex) in out.iter_mut().zip(self.volume()) {
+                    *slot = vertex;
+                }
+                Some(8)
+            }
+            Primitive::Cylinder => {
+                for k in 0..SIDES {
+                    let (x, y) = ring(k);
+                    out[2 * k] = world([x, y, 0.0]);
+                    out[2 * k + 1] = world([x, y, 1.0]);
+                }
+                Some(2 * SIDES)
+            }
+            Primitive::Cone => {
+                out[0] = world([0.0; 3]);
+                for k in 0..SIDES {
+                    let (x, y) = ring(k);
+                    out[k + 1] = world([x, y, 1.0]);
+                }
+                Some(SIDES + 1)
+            }
+            Primitive::Sphere => {
+                let m = &self.object_from_world.rows;
+                let (centre, radius, normal) = match *view {
+                    View::Perspective { eye } => {
+                        let e = self.object_from_world.transform_point(eye);
+                        let squared = dot(e, e);
+                        if !(squared > 1.0 + 1e-6) {
+                            return None;
+                        }
+                        let length = libm::sqrt(squared);
+                        (e.map(|c| c / squared), libm::sqrt(1.0 - 1.0 / squared), e.map(|c| c / length))
+                    }
+                    View::Parallel { direction: d } => {
+                        let v: [f64; 3] = core::array::from_fn(|j| d[0] * m[0][j] + d[1] * m[1][j] + d[2] * m[2][j]);
+                        let length = libm::sqrt(dot(v, v));
+                        if !(length > 0.0) {
+                            return None;
+                        }
+                        ([0.0; 3], 1.0, v.map(|c| c / length))
+                    }
+                };
+                // An orthonormal basis (a, b) of the rim's plane.
+                let helper = if normal[0].abs() < 0.6 { [1.0, 0.0, 0.0] } else { [0.0, 1.0, 0.0] };
+                let a = normalize(cross(normal, helper));
+                let b = cross(normal, a);
+                for k in 0..SIDES {
+                    let (x, y) = ring(k);
+                    out[k] = world(core::array::from_fn(|j| centre[j] + radius * (x * a[j] + y * b[j])));
+                }
+                Some(SIDES)
+            }
+        }
     }
 
     /// For a sphere: its centre and the rows of the 3x3 (p = centre + u·M, |u| ≤ 1).
@@ -141,6 +219,15 @@ fn largest_semi_axis(m: &[[f64; 3]; 3]) -> f64 {
 
 pub fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+}
+
+fn normalize(v: [f64; 3]) -> [f64; 3] {
+    let length = libm::sqrt(dot(v, v));
+    v.map(|c| c / length)
 }
 
 fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {

@@ -29,7 +29,7 @@ impl Extent {
             Projected::Invisible => return Self::EMPTY,
         };
         let (mut low, mut high) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-        for p in points {
+        for p in points.vertices() {
             for k in 0..2 {
                 low[k] = low[k].min(p[k]);
                 high[k] = high[k].max(p[k]);

@@ -66,8 +66,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
                 .and_then(|inverse| ObjectGeometry::new(description.primitive, &AffineTransform::<N>::from_matrix(&inverse)));
             let Some(geometry) = geometry else { continue };
             if optimizations.extents || optimizations.grid {
-                let volume = geometry.volume();
-                acceleration.extents[index] = Extent::of(&screen, &screen.project_volume(&volume));
+                acceleration.extents[index] = Extent::of(&screen, &screen.project_object(&geometry));
             }
             if optimizations.sortlist {
                 if let Some(bound) = sortlist::depth_bound(&screen, &corners, &geometry) {

@@ -5,6 +5,7 @@
 //! any volume when the parallel direction is parallel to the view plane (B17), has no usable
 //! projection: callers then treat it as covering the whole screen.
 
+use super::bounding_volume::{ObjectGeometry, MAX_POINTS};
 use crate::camera::Camera;
 use crate::number::Number;
 
@@ -24,10 +25,10 @@ pub struct Screen {
     pub view: View,
 }
 
-/// A projected bounding volume.
+/// A projected object: the convex hull of its silhouette points in image coordinates.
 #[derive(Clone, Copy, Debug)]
 pub enum Projected {
-    Points([[f64; 2]; 8]),
+    Points(Polygon),
     /// No usable projection: may cover any pixel.
     Whole,
     /// No primary ray can reach it.
@@ -100,22 +101,26 @@ impl Screen {
         [column, row]
     }
 
-    /// The 8 volume vertices in image coordinates; `Whole` when some vertex has no projection.
-    /// A volume wholly behind the rays' origins (every vertex behind the eye plane, or behind
-    /// the parallel view plane, by a margin) is `Invisible`: no primary ray can reach it.
-    pub fn project_volume(&self, volume: &[[f64; 3]; 8]) -> Projected {
-        if volume.iter().all(|p| self.behind(*p)) {
+    /// The object's silhouette in image coordinates; `Whole` when some silhouette point has no
+    /// projection (at or behind the eye: digest B16; rays along the view plane: B17). An object
+    /// whose bounding volume lies wholly behind the rays' origins (every vertex behind the eye
+    /// plane, or behind the parallel view plane, by a margin) is `Invisible`: no primary ray
+    /// can reach it.
+    pub fn project_object(&self, geometry: &ObjectGeometry) -> Projected {
+        if geometry.volume().iter().all(|p| self.behind(*p)) {
             return Projected::Invisible;
         }
-        let mut out = [[0.0; 2]; 8];
-        for (vertex, image) in volume.iter().zip(out.iter_mut()) {
+        let mut world = [[0.0; 3]; MAX_POINTS];
+        let Some(count) = geometry.silhouette_points(&self.view, &mut world) else { return Projected::Whole };
+        let mut image = [[0.0; 2]; MAX_POINTS];
+        for (vertex, image) in world[..count].iter().zip(image.iter_mut()) {
             let Some(point) = self.project(*vertex) else { return Projected::Whole };
             *image = self.to_image(point);
             if !(image[0].is_finite() && image[1].is_finite()) {
                 return Projected::Whole;
             }
         }
-        Projected::Points(out)
+        Projected::Points(Polygon::hull(&mut image[..count]))
     }
 
     /// Whether `p` lies clearly behind where every primary ray starts (so t < 0 for it).
@@ -139,5 +144,55 @@ impl Screen {
         let first = libm::ceil(low - MARGIN).max(0.0);
         let last = libm::floor(high + MARGIN).min(f64::from(count) - 1.0);
         (first <= last).then(|| (first as u16, last as u16))
+    }
+}
+
+/// A convex polygon (counter-clockwise in image coordinates), at most `MAX_POINTS` vertices.
+#[derive(Clone, Copy, Debug)]
+pub struct Polygon {
+    pub points: [[f64; 2]; MAX_POINTS],
+    pub count: usize,
+}
+
+impl Polygon {
+    /// The convex hull of `points` (Andrew's monotone chain; sorts `points` in place).
+    pub fn hull(points: &mut [[f64; 2]]) -> Self {
+        let n = points.len().min(MAX_POINTS);
+        let points = &mut points[..n];
+        // Insertion sort by (x, y): at most 32 points.
+        for i in 1..n {
+            let mut j = i;
+            while j > 0 && (points[j][0], points[j][1]) < (points[j - 1][0], points[j - 1][1]) {
+                points.swap(j, j - 1);
+                j -= 1;
+            }
+        }
+        let cross = |o: [f64; 2], a: [f64; 2], b: [f64; 2]| (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+        let mut hull = [[0.0; 2]; MAX_POINTS];
+        let mut chain = [[0.0; 2]; 2 * MAX_POINTS];
+        let mut k = 0usize;
+        for &p in points.iter() {
+            while k >= 2 && cross(chain[k - 2], chain[k - 1], p) <= 0.0 {
+                k -= 1;
+            }
+            chain[k] = p;
+            k += 1;
+        }
+        let lower = k + 1;
+        for &p in points.iter().rev().skip(1) {
+            while k >= lower && cross(chain[k - 2], chain[k - 1], p) <= 0.0 {
+                k -= 1;
+            }
+            chain[k] = p;
+            k += 1;
+        }
+        // The last point repeats the first (for n >= 2).
+        let count = if n >= 2 { (k - 1).min(MAX_POINTS) } else { n };
+        hull[..count].copy_from_slice(&chain[..count]);
+        Self { points: hull, count }
+    }
+
+    pub fn vertices(&self) -> &[[f64; 2]] {
+        &self.points[..self.count]
     }
 }
