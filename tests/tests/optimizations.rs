@@ -229,6 +229,9 @@ fn thesis_scenes_at_full_size_all_on_matches_none() {
         scene.optimizations = Optimizations::ALL;
         let (image, all) = render::<f64>(&scene, false);
         assert!(image == reference, "{name}: all-on differs from none at full size");
+        let prepared = Box::new(Scene::<f64, CAPACITY>::prepare(&scene).unwrap());
+        assert!(prepared.acceleration.grid_active(), "{name}: the grid pool overflowed");
+        println!("{name}: {} grid entries for {} objects", prepared.acceleration.grid_entries(), scene.objects.len());
         assert_eq!(all.rays_intersected, none.rays_intersected);
         assert_eq!(all.shadow_rays, none.shadow_rays);
         println!("{name}: none {none:?}\n{name}: all  {all:?}");
@@ -243,6 +246,6 @@ fn acceleration_memory_is_bounded() {
     let fixed = per_scene_21 as f64 - 21.0 * per_object;
     let f32_54 = core::mem::size_of::<Acceleration<f32, 54>>();
     println!("Acceleration<f64, N>: {per_object} bytes per object + {fixed} bytes per scene; f64 x 54 = {per_scene_54}, f32 x 54 = {f32_54}");
-    assert!(per_object <= 120.0, "{per_object} bytes per object");
+    assert!(per_object <= 200.0, "{per_object} bytes per object");
     assert!(fixed <= 1024.0, "{fixed} bytes per scene");
 }

@@ -1,20 +1,34 @@
-//! Grid (§4.7.4, `makegrid`): the screen cut into 20x20 cells, each with the objects whose
-//! extent overlaps it, in test order (so with Sortlist each cell list stays sorted).
+//! Grid (§4.7.4, `makegrid`): the screen cut into 20x20 cells, each with the objects that may
+//! cover it, in test order (so with Sortlist each cell list stays sorted).
 //!
-//! No heap: the cell lists share one pool of `POOL_PER_OBJECT · MAX_OBJECTS` object numbers
-//! (`u16`), with 401 `u16` start offsets. The cell size is the thesis's
-//! `(pixels − 1)/20 + 1`. A cell list simply ends at the next cell's start (the thesis's
-//! NULL-dereferencing `nextobject`, digest B4, cannot happen). Should a scene need more entries
-//! than the pool holds, the grid is switched off for that scene (every object is a candidate),
-//! which changes speed, never the image.
+//! No heap: the cell lists share one pool of `POOL_PER_OBJECT · MAX_OBJECTS` entries of three
+//! `u16`s, with 401 `u16` start offsets. The cell size is the thesis's `(pixels − 1)/20 + 1`.
+//! A cell list simply ends at the next cell's start (the thesis's NULL-dereferencing
+//! `nextobject`, digest B4, cannot happen). Should a scene need more entries than the pool
+//! holds, the grid is switched off for that scene (every object is a candidate), which changes
+//! speed, never the image.
+//!
+//! Thesis-faithful membership: an object is in every cell its extent rectangle overlaps. With
+//! `cell_rectangles` (our default), membership uses the object's silhouette polygon, and each
+//! entry also keeps the polygon's bounding rectangle *within that cell* (offsets from the
+//! cell's corner, one byte each, saturating at 255, which only ever widens it), so a thin
+//! oblique object skips most pixels of the cells it crosses.
 
 use super::extents::Extent;
+use super::pixelbuffer::band_span;
+use super::projection::{Projected, Screen};
 
 /// Cells across and down (`GRIDCOL`, `GRIDROW`).
 pub const GRID_SIZE: u16 = 20;
 const CELLS: usize = GRID_SIZE as usize * GRID_SIZE as usize;
-/// Pool entries per object: an object's extent may overlap this many cells on average.
-pub const POOL_PER_OBJECT: usize = 32;
+/// Pool entries per object: an object may overlap this many cells on average.
+pub const POOL_PER_OBJECT: usize = 24;
+
+/// One cell entry: object number, then the columns and rows it may cover within the cell as
+/// `first | last << 8` offsets from the cell's corner.
+pub type Entry = [u16; 3];
+
+const WHOLE_CELL: u16 = 0xFF00;
 
 #[derive(Clone, Debug)]
 pub struct Grid<const MAX_OBJECTS: usize> {
@@ -23,61 +37,110 @@ pub struct Grid<const MAX_OBJECTS: usize> {
     cell_width: u16,
     cell_height: u16,
     starts: [u16; CELLS + 1],
-    pool: [[u16; POOL_PER_OBJECT]; MAX_OBJECTS],
+    pool: [[Entry; POOL_PER_OBJECT]; MAX_OBJECTS],
 }
 
 impl<const MAX_OBJECTS: usize> Grid<MAX_OBJECTS> {
     pub fn inactive() -> Self {
-        Self { active: false, cell_width: 1, cell_height: 1, starts: [0; CELLS + 1], pool: [[0; POOL_PER_OBJECT]; MAX_OBJECTS] }
+        Self { active: false, cell_width: 1, cell_height: 1, starts: [0; CELLS + 1], pool: [[[0; 3]; POOL_PER_OBJECT]; MAX_OBJECTS] }
     }
 
-    /// `order`: the objects in test order; `extents` indexed by object number.
-    pub fn build(width: u16, height: u16, order: &[u16], extents: &[Extent]) -> Self {
+    /// `order`: the objects in test order; `extents` indexed by object number; `polygon` gives
+    /// an object's silhouette (used only with `cell_rectangles`).
+    pub fn build(
+        screen: &Screen,
+        order: &[u16],
+        extents: &[Extent],
+        polygon: impl Fn(usize) -> Projected,
+        cell_rectangles: bool,
+    ) -> Self {
         let mut grid = Self::inactive();
-        grid.cell_width = (width - 1) / GRID_SIZE + 1;
-        grid.cell_height = (height - 1) / GRID_SIZE + 1;
-        let capacity = (POOL_PER_OBJECT * MAX_OBJECTS).min(u16::MAX as usize);
-        let pool = grid.pool.as_flattened_mut();
-        let mut used = 0usize;
-        for cell in 0..CELLS {
-            grid.starts[cell] = used as u16;
-            let (row, column) = ((cell / GRID_SIZE as usize) as u32, (cell % GRID_SIZE as usize) as u32);
-            let (x1, y1) = (column * u32::from(grid.cell_width), row * u32::from(grid.cell_height));
-            let (x2, y2) = (x1 + u32::from(grid.cell_width) - 1, y1 + u32::from(grid.cell_height) - 1);
-            for &object in order {
-                let Some(extent) = extents.get(usize::from(object)) else { continue };
-                if extent.is_empty() {
-                    continue;
-                }
-                let overlaps = u32::from(extent.first_column) <= x2
-                    && u32::from(extent.last_column) >= x1
-                    && u32::from(extent.first_row) <= y2
-                    && u32::from(extent.last_row) >= y1;
-                if overlaps {
-                    if used >= capacity {
-                        return Self::inactive();
+        let (cell_width, cell_height) = ((screen.width - 1) / GRID_SIZE + 1, (screen.height - 1) / GRID_SIZE + 1);
+        grid.cell_width = cell_width;
+        grid.cell_height = cell_height;
+        // Calls `add(cell, entry)` for every cell the object may cover.
+        let visit = |object: u16, add: &mut dyn FnMut(usize, Entry)| {
+            let Some(extent) = extents.get(usize::from(object)).copied() else { return };
+            if extent.is_empty() {
+                return;
+            }
+            let shape = if cell_rectangles { polygon(usize::from(object)) } else { Projected::Whole };
+            for cell_row in extent.first_row / cell_height..=extent.last_row / cell_height {
+                let y0 = cell_row * cell_height;
+                let rows = (y0.max(extent.first_row), (y0 + (cell_height - 1)).min(extent.last_row));
+                for cell_column in extent.first_column / cell_width..=extent.last_column / cell_width {
+                    let x0 = cell_column * cell_width;
+                    let columns = (x0.max(extent.first_column), (x0 + (cell_width - 1)).min(extent.last_column));
+                    let cell = usize::from(cell_row) * GRID_SIZE as usize + usize::from(cell_column);
+                    let Projected::Points(p) = &shape else {
+                        add(cell, [object, WHOLE_CELL, WHOLE_CELL]);
+                        continue;
+                    };
+                    // The polygon's columns within the cell's rows, then its rows within those
+                    // columns.
+                    let Some((c1, c2)) = band_span(p, 1, f64::from(rows.0), f64::from(rows.1), screen.width) else { continue };
+                    let (c1, c2) = (c1.max(columns.0), c2.min(columns.1));
+                    if c1 > c2 {
+                        continue;
                     }
-                    pool[used] = object;
-                    used += 1;
+                    let Some((r1, r2)) = band_span(p, 0, f64::from(c1), f64::from(c2), screen.height) else { continue };
+                    let (r1, r2) = (r1.max(rows.0), r2.min(rows.1));
+                    if r1 > r2 {
+                        continue;
+                    }
+                    let pack = |first: u16, last: u16, origin: u16| (first - origin).min(255) | ((last - origin).min(255) << 8);
+                    add(cell, [object, pack(c1, c2, x0), pack(r1, r2, y0)]);
                 }
             }
+        };
+        // Pass 1: count per cell; pass 2: place, in test order.
+        let mut counts = [0u32; CELLS];
+        for &object in order {
+            visit(object, &mut |cell, _| counts[cell] += 1);
+        }
+        let capacity = (POOL_PER_OBJECT * MAX_OBJECTS).min(u16::MAX as usize);
+        let mut used = 0usize;
+        for (cell, count) in counts.iter().enumerate() {
+            grid.starts[cell] = used.min(u16::MAX as usize) as u16;
+            used += *count as usize;
+        }
+        if used > capacity {
+            return Self::inactive();
         }
         grid.starts[CELLS] = used as u16;
+        let mut next: [u16; CELLS] = core::array::from_fn(|cell| grid.starts[cell]);
+        let pool = grid.pool.as_flattened_mut();
+        for &object in order {
+            visit(object, &mut |cell, entry| {
+                pool[usize::from(next[cell])] = entry;
+                next[cell] += 1;
+            });
+        }
         grid.active = true;
         grid
     }
 
-    /// The candidate list of the cell holding image pixel (column, row).
+    /// The entries of the cell holding image pixel (column, row), and the pixel's offsets
+    /// from the cell's corner (saturated at 255).
     #[inline]
-    pub fn cell(&self, column: u16, row: u16) -> &[u16] {
-        let (cell_column, cell_row) = (column / self.cell_width, row / self.cell_height);
-        let cell = usize::from(cell_row.min(GRID_SIZE - 1)) * GRID_SIZE as usize + usize::from(cell_column.min(GRID_SIZE - 1));
+    pub fn cell(&self, column: u16, row: u16) -> (&[Entry], u16, u16) {
+        let (cell_column, cell_row) = ((column / self.cell_width).min(GRID_SIZE - 1), (row / self.cell_height).min(GRID_SIZE - 1));
+        let cell = usize::from(cell_row) * GRID_SIZE as usize + usize::from(cell_column);
         let (start, end) = (usize::from(self.starts[cell]), usize::from(self.starts[cell + 1]));
-        self.pool.as_flattened().get(start..end).unwrap_or(&[])
+        let dx = (column - cell_column * self.cell_width).min(255);
+        let dy = (row - cell_row * self.cell_height).min(255);
+        (self.pool.as_flattened().get(start..end).unwrap_or(&[]), dx, dy)
     }
 
     /// Total entries over all cells.
     pub fn entries(&self) -> usize {
         usize::from(self.starts[CELLS])
     }
+}
+
+/// Whether a pixel at offsets (dx, dy) in the cell may be covered by the entry's object.
+#[inline]
+pub fn entry_covers(entry: &Entry, dx: u16, dy: u16) -> bool {
+    let inside = |packed: u16, offset: u16| offset >= (packed & 0xFF) && offset <= (packed >> 8);
+    inside(entry[1], dx) && inside(entry[2], dy)
 }

@@ -25,6 +25,24 @@ use grid::Grid;
 use projection::Screen;
 use shadow::ShadowBound;
 
+/// Choices beyond the thesis; [`Tuning::IMPROVED`] is the default, [`Tuning::THESIS`] is the
+/// thesis's own algorithms (the 8-vertex volumes, the extent grid, shadow rays unculled).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Tuning {
+    /// Silhouettes from 16-gons circumscribed about rims and caps, not the 8-vertex volumes.
+    pub tight_silhouettes: bool,
+    /// Grid membership by silhouette, with the silhouette's rectangle within each cell.
+    pub cell_rectangles: bool,
+    /// Shadow rays skip objects whose bounding sphere they miss, and try the last blocker
+    /// first (with Extents on).
+    pub shadow_culling: bool,
+}
+
+impl Tuning {
+    pub const IMPROVED: Self = Self { tight_silhouettes: true, cell_rectangles: true, shadow_culling: true };
+    pub const THESIS: Self = Self { tight_silhouettes: false, cell_rectangles: false, shadow_culling: false };
+}
+
 /// What the optimizations derive per object from the bounding volumes at preprocess time.
 /// Per object: its place in the test order (`u16`), its extent (4 `u16`), a depth bound (`N`)
 /// and a shadow bounding sphere (4 `N`); per scene: the grid.
@@ -32,6 +50,7 @@ use shadow::ShadowBound;
 pub struct Acceleration<N, const MAX_OBJECTS: usize> {
     count: usize,
     optimizations: Optimizations,
+    tuning: Tuning,
     screen: Screen,
     /// Test order: sorted by depth bound with Sortlist, object order otherwise.
     order: [u16; MAX_OBJECTS],
@@ -45,11 +64,16 @@ pub struct Acceleration<N, const MAX_OBJECTS: usize> {
 impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
     /// The thesis's `preprocess` for the optimizations (digest §8.2).
     pub fn build(camera: &Camera<N>, optimizations: Optimizations, objects: &[ObjectDescription]) -> Self {
+        Self::build_with(camera, optimizations, objects, Tuning::IMPROVED)
+    }
+
+    pub fn build_with(camera: &Camera<N>, optimizations: Optimizations, objects: &[ObjectDescription], tuning: Tuning) -> Self {
         let count = objects.len().min(MAX_OBJECTS).min(usize::from(u16::MAX));
         let screen = Screen::new(camera);
         let mut acceleration = Self {
             count,
             optimizations,
+            tuning,
             screen,
             order: core::array::from_fn(|i| i as u16),
             extents: [Extent::whole(&screen); MAX_OBJECTS],
@@ -60,13 +84,9 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
         let corners = window_corners(&screen, camera);
         for (index, description) in objects.iter().take(count).enumerate() {
             // The geometry as the tracer will see it: the inverse rounded to N, inverted back.
-            let geometry = description
-                .world_from_object
-                .affine_inverse()
-                .and_then(|inverse| ObjectGeometry::new(description.primitive, &AffineTransform::<N>::from_matrix(&inverse)));
-            let Some(geometry) = geometry else { continue };
+            let Some(geometry) = rendered_geometry::<N>(description) else { continue };
             if optimizations.extents || optimizations.grid {
-                acceleration.extents[index] = Extent::of(&screen, &screen.project_object(&geometry));
+                acceleration.extents[index] = Extent::of(&screen, &screen.project_object(&geometry, tuning.tight_silhouettes));
             }
             if optimizations.sortlist {
                 if let Some(bound) = sortlist::depth_bound(&screen, &corners, &geometry) {
@@ -81,20 +101,36 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
             sortlist::sort_by_bound(&mut acceleration.order[..count], |i| near[i]);
         }
         if optimizations.grid {
-            acceleration.grid = Grid::build(screen.width, screen.height, &acceleration.order[..count], &acceleration.extents[..count]);
+            let polygon = |index: usize| match objects.get(index).and_then(rendered_geometry::<N>) {
+                Some(geometry) => screen.project_object(&geometry, tuning.tight_silhouettes),
+                None => projection::Projected::Whole,
+            };
+            acceleration.grid =
+                Grid::build(&screen, &acceleration.order[..count], &acceleration.extents[..count], polygon, tuning.cell_rectangles);
         }
         acceleration
     }
 
-    /// The objects a primary ray through `pixel` is tested against, in test order: the pixel's
-    /// grid cell list with Grid, every object otherwise.
+    /// Grid: the entries of the pixel's cell and the pixel's offsets in it; `None` without a grid.
     #[inline]
-    pub fn candidates(&self, pixel: PixelPosition) -> &[u16] {
-        if self.grid.active {
-            self.grid.cell(pixel.column, pixel.row)
-        } else {
-            &self.order[..self.count]
-        }
+    pub fn grid_cell(&self, pixel: PixelPosition) -> Option<(&[grid::Entry], u16, u16)> {
+        self.grid.active.then(|| self.grid.cell(pixel.column, pixel.row))
+    }
+
+    /// Every object, in test order (sorted by depth bound with Sortlist).
+    #[inline]
+    pub fn order(&self) -> &[u16] {
+        &self.order[..self.count]
+    }
+
+    pub fn tuning(&self) -> Tuning {
+        self.tuning
+    }
+
+    /// Whether shadow rays are culled (shadow culling tuned on, with Extents).
+    #[inline]
+    pub fn culls_shadows(&self) -> bool {
+        self.tuning.shadow_culling && self.optimizations.extents
     }
 
     /// Extents: whether the pixel lies outside the object's rectangle (skip it untested).
@@ -137,6 +173,12 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
     pub fn extent(&self, object: usize) -> Option<Extent> {
         self.extents.get(object).copied()
     }
+}
+
+/// The object's geometry as the tracer will see it: the inverse rounded to `N`, inverted back.
+fn rendered_geometry<N: Number>(description: &ObjectDescription) -> Option<ObjectGeometry> {
+    let inverse = description.world_from_object.affine_inverse()?;
+    ObjectGeometry::new(description.primitive, &AffineTransform::<N>::from_matrix(&inverse))
 }
 
 /// The view-plane window's corners in world space (the parallel rays' extreme origins).

@@ -16,7 +16,14 @@ use super::projection::{Polygon, Screen, MARGIN};
 
 /// The inclusive column span of row `row` covered by the convex `polygon` (with the margin).
 pub fn hull_span(polygon: &Polygon, row: u16, width: u16) -> Option<(u16, u16)> {
-    let (low, high) = (f64::from(row) - MARGIN, f64::from(row) + MARGIN);
+    band_span(polygon, 1, f64::from(row), f64::from(row), width)
+}
+
+/// The inclusive pixel range along the other axis covered by the polygon within the band
+/// `first..=last` (with the margin) along `axis` (0: columns, 1: rows), clipped to `count`.
+pub fn band_span(polygon: &Polygon, axis: usize, first: f64, last: f64, count: u16) -> Option<(u16, u16)> {
+    let other = 1 - axis;
+    let (low, high) = (first - MARGIN, last + MARGIN);
     let (mut left, mut right) = (f64::INFINITY, f64::NEG_INFINITY);
     let mut take = |x: f64| {
         left = left.min(x);
@@ -25,24 +32,24 @@ pub fn hull_span(polygon: &Polygon, row: u16, width: u16) -> Option<(u16, u16)> 
     let points = polygon.vertices();
     for (i, &a) in points.iter().enumerate() {
         let b = points[(i + 1) % points.len()];
-        let dy = b[1] - a[1];
+        let dy = b[axis] - a[axis];
         if dy == 0.0 {
-            if a[1] >= low && a[1] <= high {
-                take(a[0]);
-                take(b[0]);
+            if a[axis] >= low && a[axis] <= high {
+                take(a[other]);
+                take(b[other]);
             }
             continue;
         }
         // s where the edge crosses the band's edges, clipped to [0, 1].
-        let (s1, s2) = ((low - a[1]) / dy, (high - a[1]) / dy);
+        let (s1, s2) = ((low - a[axis]) / dy, (high - a[axis]) / dy);
         let (s_low, s_high) = (s1.min(s2).max(0.0), s1.max(s2).min(1.0));
         if s_low <= s_high {
-            take(a[0] + s_low * (b[0] - a[0]));
-            take(a[0] + s_high * (b[0] - a[0]));
+            take(a[other] + s_low * (b[other] - a[other]));
+            take(a[other] + s_high * (b[other] - a[other]));
         }
     }
     if left > right {
         return None;
     }
-    Screen::pixel_range(left, right, width)
+    Screen::pixel_range(left, right, count)
 }

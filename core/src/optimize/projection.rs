@@ -106,12 +106,20 @@ impl Screen {
     /// whose bounding volume lies wholly behind the rays' origins (every vertex behind the eye
     /// plane, or behind the parallel view plane, by a margin) is `Invisible`: no primary ray
     /// can reach it.
-    pub fn project_object(&self, geometry: &ObjectGeometry) -> Projected {
-        if geometry.volume().iter().all(|p| self.behind(*p)) {
+    /// With `tight` off, the thesis's 8 volume vertices are projected instead.
+    pub fn project_object(&self, geometry: &ObjectGeometry, tight: bool) -> Projected {
+        let volume = geometry.volume();
+        if volume.iter().all(|p| self.behind(*p)) {
             return Projected::Invisible;
         }
         let mut world = [[0.0; 3]; MAX_POINTS];
-        let Some(count) = geometry.silhouette_points(&self.view, &mut world) else { return Projected::Whole };
+        let count = if tight {
+            let Some(count) = geometry.silhouette_points(&self.view, &mut world) else { return Projected::Whole };
+            count
+        } else {
+            world[..8].copy_from_slice(&volume);
+            8
+        };
         let mut image = [[0.0; 2]; MAX_POINTS];
         for (vertex, image) in world[..count].iter().zip(image.iter_mut()) {
             let Some(point) = self.project(*vertex) else { return Projected::Whole };

@@ -11,6 +11,7 @@ use super::Statistics;
 use crate::camera::PixelPosition;
 use crate::geometry::{Ray, Vector3};
 use crate::number::Number;
+use crate::optimize::grid::entry_covers;
 use crate::scene::Scene;
 use crate::shapes::Interval;
 
@@ -30,27 +31,41 @@ pub fn nearest_hit<N: Number, const MAX_OBJECTS: usize>(
 ) -> Option<NearestHit<N>> {
     let acceleration = &scene.acceleration;
     let mut nearest: Option<NearestHit<N>> = None;
-    for &candidate in acceleration.candidates(pixel) {
-        let index = usize::from(candidate);
+    // Tests one candidate; false ends the loop (Sortlist's exit).
+    let mut test = |index: usize, nearest: &mut Option<NearestHit<N>>| -> bool {
         if acceleration.outside_extent(index, pixel) {
-            continue;
+            return true;
         }
-        let interval = match nearest {
+        let interval = match *nearest {
             None => Interval::unbounded(),
             Some(best) => {
                 if acceleration.beyond(index, best.t) {
-                    break;
+                    return false;
                 }
                 // An equal t wins only for an object earlier in the scene.
                 Interval { max: best.t, include_max: index < best.object }
             }
         };
-        let Some(object) = scene.objects.get(index) else { continue };
+        let Some(object) = scene.objects.get(index) else { return true };
         statistics.ro_tests += 1;
         let local_ray = object.object_from_world.ray(ray);
         if let Some(hit) = object.primitive.intersect(&local_ray, interval) {
             statistics.ro_hits += 1;
-            nearest = Some(NearestHit { object: index, t: hit.t, local_normal: hit.normal });
+            *nearest = Some(NearestHit { object: index, t: hit.t, local_normal: hit.normal });
+        }
+        true
+    };
+    if let Some((entries, dx, dy)) = acceleration.grid_cell(pixel) {
+        for entry in entries {
+            if entry_covers(entry, dx, dy) && !test(usize::from(entry[0]), &mut nearest) {
+                break;
+            }
+        }
+    } else {
+        for &index in acceleration.order() {
+            if !test(usize::from(index), &mut nearest) {
+                break;
+            }
         }
     }
     nearest

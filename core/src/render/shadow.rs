@@ -7,7 +7,8 @@
 //! shadow ray's segment passes through its bounding sphere (`optimize::shadow`), and the object
 //! that blocked the previous shadow ray is tried first (a shadow cache). Both only skip tests
 //! whose answer is known or reorder tests of a yes/no question, so the image is unchanged.
-//! They are on whenever any optimization is on.
+//! They are on with Extents (they are its three-dimensional counterpart) unless the
+//! acceleration was built with the thesis's tuning.
 
 use super::Statistics;
 use crate::geometry::{Ray, Vector3};
@@ -44,9 +45,8 @@ pub fn in_shadow_cached<N: Number, const MAX_OBJECTS: usize>(
     statistics.shadow_rays += 1;
     let ray = Ray { origin: point, direction: to_light };
     let interval = Interval::below(light_distance);
-    let o = scene.optimizations;
-    let cull = o.pixelbuffer || o.extents || o.grid || o.sortlist;
     let acceleration = &scene.acceleration;
+    let cull = acceleration.culls_shadows();
     let blocks = |index: usize, statistics: &mut Statistics| -> bool {
         if index == shaded_object {
             return false;

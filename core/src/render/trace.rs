@@ -157,7 +157,7 @@ where
     }
     for object in scene.objects.iter() {
         let projected = match ObjectGeometry::new(object.primitive, &object.object_from_world) {
-            Some(geometry) => screen.project_object(&geometry),
+            Some(geometry) => screen.project_object(&geometry, scene.acceleration.tuning().tight_silhouettes),
             None => Projected::Whole,
         };
         let points = match projected {
