@@ -186,6 +186,23 @@ impl ObjectGeometry {
         bound
     }
 
+    /// A capsule containing the object: segment ends and radius. Cylinders and cones use their
+    /// axis, with the radius reaching the 16-gons circumscribed about their circles; spheres and
+    /// cubes a point and their bounding sphere.
+    pub fn bounding_capsule(&self) -> ([f64; 3], [f64; 3], f64) {
+        if matches!(self.primitive, Primitive::Cylinder | Primitive::Cone) {
+            let start = self.world_from_object.transform_point([0.0; 3]);
+            let end = self.world_from_object.transform_point([0.0, 0.0, 1.0]);
+            let mut points = [[0.0; 3]; MAX_POINTS];
+            // The viewpoint does not matter for these primitives' points.
+            let count = self.silhouette_points(&View::Parallel { direction: [0.0, 0.0, 1.0] }, &mut points).unwrap_or(0);
+            let radius = points[..count].iter().map(|p| segment_distance(*p, start, end)).fold(0.0, f64::max);
+            return (start, end, radius * (1.0 + 1e-9));
+        }
+        let (centre, radius) = self.bounding_sphere();
+        (centre, centre, radius)
+    }
+
     /// A sphere containing the bounding volume: (centre, radius).
     pub fn bounding_sphere(&self) -> ([f64; 3], f64) {
         let volume = self.volume();
@@ -228,6 +245,14 @@ fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
 fn normalize(v: [f64; 3]) -> [f64; 3] {
     let length = libm::sqrt(dot(v, v));
     v.map(|c| c / length)
+}
+
+fn segment_distance(p: [f64; 3], a: [f64; 3], b: [f64; 3]) -> f64 {
+    let ab = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
+    let ap = [p[0] - a[0], p[1] - a[1], p[2] - a[2]];
+    let squared = dot(ab, ab);
+    let t = if squared > 0.0 { (dot(ap, ab) / squared).clamp(0.0, 1.0) } else { 0.0 };
+    distance(p, [a[0] + t * ab[0], a[1] + t * ab[1], a[2] + t * ab[2]])
 }
 
 fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {

@@ -36,16 +36,19 @@ pub struct Tuning {
     /// Shadow rays skip objects whose bounding sphere they miss, and try the last blocker
     /// first (with Extents on).
     pub shadow_culling: bool,
+    /// Each primary ray first tests the object the previous ray hit (when the pixel is in its
+    /// extent), so Sortlist's exit comes at once where the surface continues.
+    pub hit_cache: bool,
 }
 
 impl Tuning {
-    pub const IMPROVED: Self = Self { tight_silhouettes: true, cell_rectangles: true, shadow_culling: true };
-    pub const THESIS: Self = Self { tight_silhouettes: false, cell_rectangles: false, shadow_culling: false };
+    pub const IMPROVED: Self = Self { tight_silhouettes: true, cell_rectangles: true, shadow_culling: true, hit_cache: true };
+    pub const THESIS: Self = Self { tight_silhouettes: false, cell_rectangles: false, shadow_culling: false, hit_cache: false };
 }
 
 /// What the optimizations derive per object from the bounding volumes at preprocess time.
 /// Per object: its place in the test order (`u16`), its extent (4 `u16`), a depth bound (`N`)
-/// and a shadow bounding sphere (4 `N`); per scene: the grid.
+/// and a shadow bounding capsule (8 `N`); per scene: the grid.
 #[derive(Debug, Clone)]
 pub struct Acceleration<N, const MAX_OBJECTS: usize> {
     count: usize,
@@ -93,8 +96,10 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
                     acceleration.near[index] = N::from_f64(bound);
                 }
             }
-            let (centre, radius) = geometry.bounding_sphere();
-            acceleration.shadow[index] = ShadowBound::new(centre, radius);
+            if tuning.shadow_culling && optimizations.extents {
+                let (start, end, radius) = geometry.bounding_capsule();
+                acceleration.shadow[index] = ShadowBound::new(start, end, radius);
+            }
         }
         if optimizations.sortlist {
             let near = acceleration.near;
@@ -125,6 +130,19 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
 
     pub fn tuning(&self) -> Tuning {
         self.tuning
+    }
+
+    /// Whether the object `object` may be seen at `pixel` by its extent (true when extents
+    /// are not computed).
+    #[inline]
+    pub fn in_extent(&self, object: usize, pixel: PixelPosition) -> bool {
+        self.extents.get(object).is_some_and(|extent| extent.contains(pixel.column, pixel.row))
+    }
+
+    /// Whether primary rays try the previous hit object first.
+    #[inline]
+    pub fn uses_hit_cache(&self) -> bool {
+        self.tuning.hit_cache && (self.optimizations.sortlist || self.optimizations.extents || self.optimizations.grid)
     }
 
     /// Whether shadow rays are culled (shadow culling tuned on, with Extents).

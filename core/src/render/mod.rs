@@ -6,7 +6,7 @@ mod shadow;
 mod statistics;
 mod trace;
 
-pub use primary::{nearest_hit, NearestHit};
+pub use primary::{nearest_hit, nearest_hit_cached, NearestHit};
 pub use shadow::{in_shadow, in_shadow_cached, ShadowCache};
 pub use statistics::Statistics;
 pub use trace::{render_pga, render_rgb, shade_pixel, ShadedPixel};

@@ -29,10 +29,38 @@ pub fn nearest_hit<N: Number, const MAX_OBJECTS: usize>(
     pixel: PixelPosition,
     statistics: &mut Statistics,
 ) -> Option<NearestHit<N>> {
+    nearest_hit_cached(scene, ray, pixel, statistics, &mut None)
+}
+
+/// [`nearest_hit`], first testing `last_hit` (the object the previous ray hit, updated here)
+/// when the acceleration uses the hit cache. Which objects are tested first cannot change the
+/// result: ties go by object number, and Sortlist's exit only skips objects whose bound lies
+/// beyond the nearest hit.
+pub fn nearest_hit_cached<N: Number, const MAX_OBJECTS: usize>(
+    scene: &Scene<N, MAX_OBJECTS>,
+    ray: &Ray<N>,
+    pixel: PixelPosition,
+    statistics: &mut Statistics,
+    last_hit: &mut Option<u16>,
+) -> Option<NearestHit<N>> {
     let acceleration = &scene.acceleration;
     let mut nearest: Option<NearestHit<N>> = None;
+    let cached = if acceleration.uses_hit_cache() { last_hit.map(usize::from).filter(|i| acceleration.in_extent(*i, pixel)) } else { None };
+    if let Some(index) = cached {
+        // Tested unbounded, before anything else: its result is final, so the loop skips it.
+        if let Some(object) = scene.objects.get(index) {
+            statistics.ro_tests += 1;
+            if let Some(hit) = object.primitive.intersect(&object.object_from_world.ray(ray), Interval::unbounded()) {
+                statistics.ro_hits += 1;
+                nearest = Some(NearestHit { object: index, t: hit.t, local_normal: hit.normal });
+            }
+        }
+    }
     // Tests one candidate; false ends the loop (Sortlist's exit).
     let mut test = |index: usize, nearest: &mut Option<NearestHit<N>>| -> bool {
+        if Some(index) == cached {
+            return true;
+        }
         if acceleration.outside_extent(index, pixel) {
             return true;
         }
@@ -67,6 +95,9 @@ pub fn nearest_hit<N: Number, const MAX_OBJECTS: usize>(
                 break;
             }
         }
+    }
+    if let Some(hit) = nearest {
+        *last_hit = Some(hit.object as u16);
     }
     nearest
 }

@@ -20,6 +20,8 @@ use crate::shapes::Interval;
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct ShadowCache {
     pub last_blocker: Option<u16>,
+    /// The object the last primary ray hit (see `nearest_hit_cached`).
+    pub last_hit: Option<u16>,
 }
 
 pub fn in_shadow<N: Number, const MAX_OBJECTS: usize>(

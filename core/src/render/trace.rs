@@ -1,7 +1,8 @@
 //! Tracing a whole image, top row first (digest §3.4), into a [`PixelSink`].
 
 use super::shadow::{in_shadow_cached, ShadowCache};
-use super::{nearest_hit, Statistics};
+use super::primary::nearest_hit_cached;
+use super::Statistics;
 use crate::camera::PixelPosition;
 use crate::optimize::bounding_volume::ObjectGeometry;
 use crate::optimize::extents::Extent;
@@ -36,7 +37,7 @@ fn shade_pixel_cached<N: Number, const MAX_OBJECTS: usize>(
 ) -> ShadedPixel<N> {
     let Some(ray) = scene.camera.primary_ray(pixel) else { return ShadedPixel::Background };
     statistics.rays_traced += 1;
-    let Some(hit) = nearest_hit(scene, &ray, pixel, statistics) else { return ShadedPixel::Background };
+    let Some(hit) = nearest_hit_cached(scene, &ray, pixel, statistics, &mut cache.last_hit) else { return ShadedPixel::Background };
     statistics.rays_intersected += 1;
     let Some(object) = scene.objects.get(hit.object) else { return ShadedPixel::Background };
     // Normal to world space through the inverse transpose (the thesis used the forward
