@@ -2,22 +2,35 @@
 //! volume, four `u16`s in image coordinates (column from the left, row from the top).
 //! A pixel outside the rectangle skips the object without a ray–object test.
 
-use super::projection::{Projected, Screen};
+use super::projection::{Projected, Screen, MARGIN};
 
-/// Inclusive rectangle; `first_column > last_column` means empty (never entered).
+/// Inclusive rectangle; `first_column > last_column` means empty (never entered). Beyond the
+/// thesis, also the silhouette's range along both diagonals (`column + row`, and
+/// `column − row + height − 1`), which makes the extent an octagon: 5% larger than a disc
+/// instead of 27%, and tight around thin oblique objects.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub struct Extent {
     pub first_column: u16,
     pub last_column: u16,
     pub first_row: u16,
     pub last_row: u16,
+    pub diagonal: [u16; 4],
 }
 
 impl Extent {
-    pub const EMPTY: Self = Self { first_column: 1, last_column: 0, first_row: 1, last_row: 0 };
+    pub const EMPTY: Self = Self { first_column: 1, last_column: 0, first_row: 1, last_row: 0, diagonal: [1, 0, 1, 0] };
 
     pub fn whole(screen: &Screen) -> Self {
-        Self { first_column: 0, last_column: screen.width - 1, first_row: 0, last_row: screen.height - 1 }
+        Self { first_column: 0, last_column: screen.width - 1, first_row: 0, last_row: screen.height - 1, diagonal: [0, u16::MAX, 0, u16::MAX] }
+    }
+
+    /// Whether the pixel lies within the diagonal ranges.
+    #[inline]
+    pub fn diagonals_contain(&self, column: u16, row: u16, height: u16) -> bool {
+        let sum = u32::from(column) + u32::from(row);
+        let difference = u32::from(column) + u32::from(height - 1) - u32::from(row);
+        let [s1, s2, d1, d2] = self.diagonal.map(u32::from);
+        sum >= s1 && sum <= s2 && difference >= d1 && difference <= d2
     }
 
     /// The rectangle of projected points (with the projection margin), or the whole screen for
@@ -35,8 +48,24 @@ impl Extent {
                 high[k] = high[k].max(p[k]);
             }
         }
+        let offset = f64::from(screen.height - 1);
+        let (mut sums, mut differences) = ((f64::INFINITY, f64::NEG_INFINITY), (f64::INFINITY, f64::NEG_INFINITY));
+        for p in points.vertices() {
+            let (sum, difference) = (p[0] + p[1], p[0] - p[1] + offset);
+            sums = (sums.0.min(sum), sums.1.max(sum));
+            differences = (differences.0.min(difference), differences.1.max(difference));
+        }
+        // A pixel within MARGIN of the silhouette in x and in y is within 2·MARGIN diagonally.
+        let range = |(low, high): (f64, f64)| {
+            let first = libm::ceil(low - 2.0 * MARGIN).clamp(0.0, 65535.0) as u16;
+            let last = libm::floor(high + 2.0 * MARGIN).clamp(0.0, 65535.0) as u16;
+            (first, last)
+        };
+        let ((s1, s2), (d1, d2)) = (range(sums), range(differences));
         match (Screen::pixel_range(low[0], high[0], screen.width), Screen::pixel_range(low[1], high[1], screen.height)) {
-            (Some((first_column, last_column)), Some((first_row, last_row))) => Self { first_column, last_column, first_row, last_row },
+            (Some((first_column, last_column)), Some((first_row, last_row))) if s1 <= s2 && d1 <= d2 => {
+                Self { first_column, last_column, first_row, last_row, diagonal: [s1, s2, d1, d2] }
+            }
             _ => Self::EMPTY,
         }
     }

@@ -154,7 +154,11 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
     /// Extents: whether the pixel lies outside the object's rectangle (skip it untested).
     #[inline]
     pub fn outside_extent(&self, object: usize, pixel: PixelPosition) -> bool {
-        self.optimizations.extents && self.extents.get(object).is_some_and(|extent| !extent.contains(pixel.column, pixel.row))
+        let Some(extent) = self.extents.get(object) else { return false };
+        (self.optimizations.extents && !extent.contains(pixel.column, pixel.row))
+            || (self.tuning.tight_silhouettes
+                && (self.optimizations.extents || self.optimizations.grid)
+                && !extent.diagonals_contain(pixel.column, pixel.row, self.screen.height))
     }
 
     /// Sortlist: whether every hit on `object` (and so on every later candidate) lies beyond
