@@ -13,19 +13,21 @@ use crate::number::Number;
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ShadowBound<N> {
-    /// One end of the capsule's segment.
-    pub start: Vector3<N>,
+    /// The middle of the capsule's segment.
+    pub centre: Vector3<N>,
     /// Unit direction of the segment (zero for a point).
     pub axis: Vector3<N>,
-    /// Length of the segment.
-    pub length: N,
+    /// Half the length of the segment.
+    pub half: N,
     /// Widened radius; `N::MAX` means "always test".
     pub radius: N,
+    /// `radius + half`: the radius of a sphere about `centre` holding the capsule.
+    pub reach: N,
 }
 
 impl<N: Number> ShadowBound<N> {
     pub fn always() -> Self {
-        Self { start: Vector3::zero(), axis: Vector3::zero(), length: N::ZERO, radius: N::MAX }
+        Self { centre: Vector3::zero(), axis: Vector3::zero(), half: N::ZERO, radius: N::MAX, reach: N::MAX }
     }
 
     /// The capsule from `start` to `end` with `radius`, widened for rounding.
@@ -33,47 +35,59 @@ impl<N: Number> ShadowBound<N> {
         let d = [end[0] - start[0], end[1] - start[1], end[2] - start[2]];
         let length = libm::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
         let axis = if length > 0.0 { d.map(|c| c / length) } else { [0.0; 3] };
-        let scale = libm::sqrt(start[0] * start[0] + start[1] * start[1] + start[2] * start[2]) + length + radius + 1.0;
+        let centre = [0, 1, 2].map(|k| (start[k] + end[k]) / 2.0);
+        let scale = libm::sqrt(centre[0] * centre[0] + centre[1] * centre[1] + centre[2] * centre[2]) + length + radius + 1.0;
         let widened = radius * (1.0 + 1e-3) + 1e-3 * scale;
-        let representable = start.iter().chain(end.iter()).all(|c| N::can_represent(*c)) && N::can_represent(widened + length);
+        let half = length / 2.0 * (1.0 + 1e-9);
+        let representable = centre.iter().all(|c| N::can_represent(*c)) && N::can_represent(widened + half);
         if !widened.is_finite() || !representable {
             return Self::always();
         }
-        Self { start: Vector3::from_f64(start), axis: Vector3::from_f64(axis), length: N::from_f64(length), radius: N::from_f64(widened) }
+        Self {
+            centre: Vector3::from_f64(centre),
+            axis: Vector3::from_f64(axis),
+            half: N::from_f64(half),
+            radius: N::from_f64(widened),
+            reach: N::from_f64(widened + half),
+        }
     }
 
-    /// Whether the segment from `point` along unit `direction` up to `reach` may come within
+    /// Whether the segment from `point` along unit `direction` up to `length` may come within
     /// the radius of the capsule's segment.
     #[inline]
-    pub fn may_block(&self, point: Vector3<N>, direction: Vector3<N>, reach: N) -> bool {
+    pub fn may_block(&self, point: Vector3<N>, direction: Vector3<N>, length: N) -> bool {
         if self.radius == N::MAX {
             return true;
         }
-        let w = self.start - point;
+        // First the sphere about the centre that holds the capsule: behind the point, beyond
+        // the light, or off the ray's line in some coordinate.
+        let w = self.centre - point;
         let b = direction.dot(w);
-        // The capsule lies wholly behind the point or beyond the light along the ray.
-        if b + self.length < -self.radius || b - self.length - self.radius > reach {
+        if b < -self.reach || b - self.reach > length {
             return false;
         }
-        let a = direction.dot(self.axis);
-        let c = self.axis.dot(w);
-        let clamp = |value: N, high: N| if value < N::ZERO { N::ZERO } else if value > high { high } else { value };
-        let t = if self.length == N::ZERO {
-            N::ZERO
+        let off = w - direction * b;
+        if off.x.abs() > self.reach || off.y.abs() > self.reach || off.z.abs() > self.reach {
+            return false;
+        }
+        // Then the capsule: the closest points of the two segments (s on the ray in
+        // [0, length], t on the axis in [−half, half]).
+        let clamp = |value: N, low: N, high: N| if value < low { low } else if value > high { high } else { value };
+        let (s, t) = if self.half == N::ZERO {
+            (clamp(b, N::ZERO, length), N::ZERO)
         } else {
+            let a = direction.dot(self.axis);
+            let c = self.axis.dot(w);
             let denominator = N::ONE - a * a;
             if denominator < N::from_f64(1e-4) {
                 return true;
             }
-            match (b - a * c).checked_div(denominator) {
-                Some(s) => clamp(clamp(s, reach) * a - c, self.length),
-                None => return true,
-            }
+            let Some(s) = (b - a * c).checked_div(denominator) else { return true };
+            let t = clamp(clamp(s, N::ZERO, length) * a - c, -self.half, self.half);
+            let s = clamp(b + t * a, N::ZERO, length);
+            (s, clamp(s * a - c, -self.half, self.half))
         };
-        let s = clamp(b + t * a, reach);
-        let t = if self.length == N::ZERO { N::ZERO } else { clamp(s * a - c, self.length) };
         let gap = direction * s - self.axis * t - w;
-        // Cheap rejection per component before the length.
         if gap.x.abs() > self.radius || gap.y.abs() > self.radius || gap.z.abs() > self.radius {
             return false;
         }
