@@ -170,6 +170,11 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
 
     /// Whether a shadow ray's segment may meet `object` (its bounding sphere).
     #[inline]
+    pub fn light_cone(&self, object: usize, light: Vector3<N>) -> (Vector3<N>, N) {
+        self.shadow.get(object).map_or((Vector3::zero(), -N::ONE), |bound| bound.light_cone(light))
+    }
+
+    #[inline]
     pub fn may_shadow(&self, object: usize, point: Vector3<N>, direction: Vector3<N>, length: N) -> bool {
         self.shadow.get(object).is_none_or(|bound| bound.may_block(point, direction, length))
     }

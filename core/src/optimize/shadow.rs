@@ -94,3 +94,27 @@ impl<N: Number> ShadowBound<N> {
         gap.length() <= self.radius
     }
 }
+
+impl<N: Number> ShadowBound<N> {
+    /// For a point light at `light`: the cone of directions from the light that meet the
+    /// capsule's enclosing sphere, as (unit axis, cosine of the widened half-angle). A shadow
+    /// ray from P can meet the capsule only if the direction from the light to P lies in the
+    /// cone. `(zero, −1)` (always inside) when the light is within the sphere.
+    pub fn light_cone(&self, light: Vector3<N>) -> (Vector3<N>, N) {
+        let always = (Vector3::zero(), -N::ONE);
+        if self.radius == N::MAX {
+            return always;
+        }
+        let v = [0, 1, 2].map(|k| self.centre.to_f64()[k] - light.to_f64()[k]);
+        let distance = libm::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+        let reach = self.reach.to_f64();
+        if !(distance > reach * (1.0 + 1e-6)) {
+            return always;
+        }
+        let half_angle = libm::asin(reach / distance) + 1e-3;
+        if half_angle >= core::f64::consts::FRAC_PI_2 {
+            return always;
+        }
+        (Vector3::from_f64(v.map(|c| c / distance)), N::from_f64(libm::cos(half_angle) - 1e-6))
+    }
+}

@@ -44,13 +44,33 @@ pub fn in_shadow_cached<N: Number, const MAX_OBJECTS: usize>(
     statistics: &mut Statistics,
     cache: &mut ShadowCache,
 ) -> bool {
+    in_shadow_culled(scene, shaded_object, point, to_light, light_distance, statistics, cache, &[])
+}
+
+/// [`in_shadow_cached`] with, for a point light, each object's cone of directions from the light
+/// (`ShadowBound::light_cone`, indexed by object; empty: none), checked before its capsule.
+#[allow(clippy::too_many_arguments)]
+pub fn in_shadow_culled<N: Number, const MAX_OBJECTS: usize>(
+    scene: &Scene<N, MAX_OBJECTS>,
+    shaded_object: usize,
+    point: Vector3<N>,
+    to_light: Vector3<N>,
+    light_distance: N,
+    statistics: &mut Statistics,
+    cache: &mut ShadowCache,
+    light_cones: &[(Vector3<N>, N)],
+) -> bool {
     statistics.shadow_rays += 1;
+    let from_light = -to_light;
     let ray = Ray { origin: point, direction: to_light };
     let interval = Interval::below(light_distance);
     let acceleration = &scene.acceleration;
     let cull = acceleration.culls_shadows();
     let blocks = |index: usize, statistics: &mut Statistics| -> bool {
         if index == shaded_object {
+            return false;
+        }
+        if cull && light_cones.get(index).is_some_and(|(axis, cosine)| from_light.dot(*axis) < *cosine) {
             return false;
         }
         if cull && !acceleration.may_shadow(index, point, to_light, light_distance) {

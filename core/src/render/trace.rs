@@ -1,6 +1,7 @@
 //! Tracing a whole image, top row first (digest §3.4), into a [`PixelSink`].
 
-use super::shadow::{in_shadow_cached, ShadowCache};
+use super::shadow::{in_shadow_culled, ShadowCache};
+use crate::geometry::Vector3;
 use super::primary::nearest_hit_cached;
 use super::Statistics;
 use crate::camera::PixelPosition;
@@ -26,7 +27,7 @@ pub fn shade_pixel<N: Number, const MAX_OBJECTS: usize>(
     pixel: PixelPosition,
     statistics: &mut Statistics,
 ) -> ShadedPixel<N> {
-    shade_pixel_cached(scene, pixel, statistics, &mut ShadowCache::default())
+    shade_pixel_cached(scene, pixel, statistics, &mut ShadowCache::default(), &[])
 }
 
 fn shade_pixel_cached<N: Number, const MAX_OBJECTS: usize>(
@@ -34,6 +35,7 @@ fn shade_pixel_cached<N: Number, const MAX_OBJECTS: usize>(
     pixel: PixelPosition,
     statistics: &mut Statistics,
     cache: &mut ShadowCache,
+    light_cones: &[(Vector3<N>, N)],
 ) -> ShadedPixel<N> {
     let Some(ray) = scene.camera.primary_ray(pixel) else { return ShadedPixel::Background };
     statistics.rays_traced += 1;
@@ -57,7 +59,7 @@ fn shade_pixel_cached<N: Number, const MAX_OBJECTS: usize>(
     };
     // A surface facing away from the light is unlit with or without a shadow ray.
     let faces_light = normal.dot(to_light) > N::ZERO;
-    let shadowed = scene.shadows && faces_light && in_shadow_cached(scene, hit.object, point, to_light, light_distance, statistics, cache);
+    let shadowed = scene.shadows && faces_light && in_shadow_culled(scene, hit.object, point, to_light, light_distance, statistics, cache, light_cones);
     ShadedPixel::Surface {
         material: object.material,
         lighting: lighting(normal, to_light, ray.direction, object.material.power, shadowed),
@@ -114,6 +116,18 @@ fn render<N, P, S, const MAX_OBJECTS: usize>(
         fill_volumes(scene, sink, fill, flood);
     }
     let mut cache = ShadowCache::default();
+    // Shadow culling for a point light: each object's cone of directions from the light.
+    let mut light_cones = [(Vector3::zero(), -N::ONE); MAX_OBJECTS];
+    let mut cone_count = 0;
+    if let PreparedLight::Point(light) = scene.light {
+        if scene.shadows && scene.acceleration.culls_shadows() {
+            cone_count = scene.objects.len();
+            for (index, cone) in light_cones.iter_mut().enumerate().take(cone_count) {
+                *cone = scene.acceleration.light_cone(index, light);
+            }
+        }
+    }
+    let light_cones = &light_cones[..cone_count];
     let mut chunk = [fill; READ_CHUNK];
     for row in 0..camera.height() {
         for column in 0..camera.width() {
@@ -133,7 +147,7 @@ fn render<N, P, S, const MAX_OBJECTS: usize>(
                     continue;
                 }
             }
-            let value = match shade_pixel_cached(scene, pixel, statistics, &mut cache) {
+            let value = match shade_pixel_cached(scene, pixel, statistics, &mut cache, light_cones) {
                 ShadedPixel::Background => background,
                 ShadedPixel::Surface { material, lighting } => colour(&material, lighting, pixel),
             };
