@@ -53,7 +53,9 @@ fn shade_pixel_cached<N: Number, const MAX_OBJECTS: usize>(
         PreparedLight::Point(position) => {
             let offset = position - point;
             let distance = offset.length();
-            (offset.normalized().unwrap_or(normal), distance)
+            // As `normalized()`, without computing the length twice.
+            let direction = N::ONE.checked_div(distance).map_or(normal, |reciprocal| offset * reciprocal);
+            (direction, distance)
         }
         PreparedLight::Direction(direction) => (direction, N::MAX),
     };
