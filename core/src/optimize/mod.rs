@@ -170,6 +170,14 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
 
     /// Whether a shadow ray's segment may meet `object` (its bounding sphere).
     #[inline]
+    /// Whether a shadow ray from `receiver` may meet `blocker` (see `shadow::may_block_object`).
+    pub fn may_block_object(&self, receiver: usize, blocker: usize, light: Option<[f64; 3]>, direction: Option<[f64; 3]>) -> bool {
+        match (self.shadow.get(receiver), self.shadow.get(blocker)) {
+            (Some(r), Some(b)) => shadow::may_block_object(r, b, light, direction),
+            _ => true,
+        }
+    }
+
     pub fn light_cone(&self, object: usize, light: Vector3<N>) -> (Vector3<N>, N) {
         self.shadow.get(object).map_or((Vector3::zero(), -N::ONE), |bound| bound.light_cone(light))
     }

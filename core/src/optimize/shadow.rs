@@ -118,3 +118,44 @@ impl<N: Number> ShadowBound<N> {
         (Vector3::from_f64(v.map(|c| c / distance)), N::from_f64(libm::cos(half_angle) - 1e-6))
     }
 }
+
+/// Whether some shadow ray from a point of `receiver` toward the light may meet `blocker`
+/// (their capsules' enclosing spheres, in `f64`, widened): toward a point light, when the two
+/// spheres' cones of directions from the light overlap and the blocker's near side is nearer
+/// the light than the receiver's far side; toward a directional light, when the blocker's
+/// sphere comes within reach of the receiver's sphere swept toward the light.
+pub fn may_block_object<N: Number>(receiver: &ShadowBound<N>, blocker: &ShadowBound<N>, light: Option<[f64; 3]>, direction: Option<[f64; 3]>) -> bool {
+    if receiver.radius == N::MAX || blocker.radius == N::MAX {
+        return true;
+    }
+    let (r, b) = (receiver.centre.to_f64(), blocker.centre.to_f64());
+    let (r_reach, b_reach) = (receiver.reach.to_f64(), blocker.reach.to_f64());
+    let margin = 1e-3 * (1.0 + r_reach + b_reach);
+    let dot = |a: [f64; 3], c: [f64; 3]| a[0] * c[0] + a[1] * c[1] + a[2] * c[2];
+    if let Some(light) = light {
+        let a = [r[0] - light[0], r[1] - light[1], r[2] - light[2]];
+        let c = [b[0] - light[0], b[1] - light[1], b[2] - light[2]];
+        let (la, lc) = (libm::sqrt(dot(a, a)), libm::sqrt(dot(c, c)));
+        if la <= r_reach + margin || lc <= b_reach + margin {
+            return true;
+        }
+        if lc - b_reach > la + r_reach + margin {
+            return false;
+        }
+        let angle = libm::acos((dot(a, c) / (la * lc)).clamp(-1.0, 1.0));
+        return angle <= libm::asin(r_reach / la) + libm::asin(b_reach / lc) + 1e-3;
+    }
+    if let Some(d) = direction {
+        let length = libm::sqrt(dot(d, d));
+        let d = d.map(|x| x / length);
+        let w = [b[0] - r[0], b[1] - r[1], b[2] - r[2]];
+        let along = dot(w, d);
+        let reach = r_reach + b_reach + margin;
+        if along < -reach {
+            return false;
+        }
+        let off = [w[0] - d[0] * along, w[1] - d[1] * along, w[2] - d[2] * along];
+        return libm::sqrt(dot(off, off)) <= reach;
+    }
+    true
+}

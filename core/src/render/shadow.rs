@@ -44,7 +44,23 @@ pub fn in_shadow_cached<N: Number, const MAX_OBJECTS: usize>(
     statistics: &mut Statistics,
     cache: &mut ShadowCache,
 ) -> bool {
-    in_shadow_culled(scene, shaded_object, point, to_light, light_distance, statistics, cache, &[])
+    in_shadow_culled(scene, shaded_object, point, to_light, light_distance, statistics, cache, &ShadowCulling::default())
+}
+
+/// Per-render shadow culling data, indexed by object (empty slices: none).
+#[derive(Clone, Copy, Debug)]
+pub struct ShadowCulling<'a, N> {
+    /// For a point light: each object's cone of directions from the light.
+    pub light_cones: &'a [(Vector3<N>, N)],
+    /// For each receiving object, the objects among the first 128 that may shadow it (bit i:
+    /// object i); objects from 128 on are always candidates.
+    pub blockers: &'a [u128],
+}
+
+impl<N> Default for ShadowCulling<'_, N> {
+    fn default() -> Self {
+        Self { light_cones: &[], blockers: &[] }
+    }
 }
 
 /// [`in_shadow_cached`] with, for a point light, each object's cone of directions from the light
@@ -58,9 +74,10 @@ pub fn in_shadow_culled<N: Number, const MAX_OBJECTS: usize>(
     light_distance: N,
     statistics: &mut Statistics,
     cache: &mut ShadowCache,
-    light_cones: &[(Vector3<N>, N)],
+    culling: &ShadowCulling<'_, N>,
 ) -> bool {
     statistics.shadow_rays += 1;
+    let light_cones = culling.light_cones;
     let from_light = -to_light;
     let ray = Ray { origin: point, direction: to_light };
     let interval = Interval::below(light_distance);
@@ -80,13 +97,28 @@ pub fn in_shadow_culled<N: Number, const MAX_OBJECTS: usize>(
         statistics.shadow_tests += 1;
         object.primitive.occluded(&object.object_from_world.ray(&ray), interval)
     };
-    let first = if cull { cache.last_blocker.map(usize::from) } else { None };
+    let bits = if cull { culling.blockers.get(shaded_object).copied() } else { None };
+    let listed = |index: usize| bits.is_none_or(|bits| index >= 128 || bits & (1u128 << index) != 0);
+    let first = if cull { cache.last_blocker.map(usize::from).filter(|index| listed(*index)) } else { None };
     if let Some(index) = first {
         if blocks(index, statistics) {
             return true;
         }
     }
-    for index in 0..scene.objects.len() {
+    let mut remaining = bits.unwrap_or(0);
+    while remaining != 0 {
+        let index = remaining.trailing_zeros() as usize;
+        remaining &= remaining - 1;
+        if Some(index) == first {
+            continue;
+        }
+        if blocks(index, statistics) {
+            cache.last_blocker = Some(index as u16);
+            return true;
+        }
+    }
+    let start = if bits.is_some() { 128 } else { 0 };
+    for index in start..scene.objects.len() {
         if Some(index) == first {
             continue;
         }

@@ -1,6 +1,6 @@
 //! Tracing a whole image, top row first (digest §3.4), into a [`PixelSink`].
 
-use super::shadow::{in_shadow_culled, ShadowCache};
+use super::shadow::{in_shadow_culled, ShadowCache, ShadowCulling};
 use crate::geometry::Vector3;
 use super::primary::nearest_hit_cached;
 use super::Statistics;
@@ -27,7 +27,7 @@ pub fn shade_pixel<N: Number, const MAX_OBJECTS: usize>(
     pixel: PixelPosition,
     statistics: &mut Statistics,
 ) -> ShadedPixel<N> {
-    shade_pixel_cached(scene, pixel, statistics, &mut ShadowCache::default(), &[])
+    shade_pixel_cached(scene, pixel, statistics, &mut ShadowCache::default(), &ShadowCulling::default())
 }
 
 fn shade_pixel_cached<N: Number, const MAX_OBJECTS: usize>(
@@ -35,7 +35,7 @@ fn shade_pixel_cached<N: Number, const MAX_OBJECTS: usize>(
     pixel: PixelPosition,
     statistics: &mut Statistics,
     cache: &mut ShadowCache,
-    light_cones: &[(Vector3<N>, N)],
+    culling: &ShadowCulling<'_, N>,
 ) -> ShadedPixel<N> {
     let Some(ray) = scene.camera.primary_ray(pixel) else { return ShadedPixel::Background };
     statistics.rays_traced += 1;
@@ -61,7 +61,7 @@ fn shade_pixel_cached<N: Number, const MAX_OBJECTS: usize>(
     };
     // A surface facing away from the light is unlit with or without a shadow ray.
     let faces_light = normal.dot(to_light) > N::ZERO;
-    let shadowed = scene.shadows && faces_light && in_shadow_culled(scene, hit.object, point, to_light, light_distance, statistics, cache, light_cones);
+    let shadowed = scene.shadows && faces_light && in_shadow_culled(scene, hit.object, point, to_light, light_distance, statistics, cache, culling);
     ShadedPixel::Surface {
         material: object.material,
         lighting: lighting(normal, to_light, ray.direction, object.material.power, shadowed),
@@ -130,6 +130,24 @@ fn render<N, P, S, const MAX_OBJECTS: usize>(
         }
     }
     let light_cones = &light_cones[..cone_count];
+    // And which objects may shadow which (receiver -> bits of possible blockers).
+    let mut blockers = [0u128; MAX_OBJECTS];
+    let mut blocker_count = 0;
+    if scene.shadows && scene.acceleration.culls_shadows() {
+        let (light, direction) = match scene.light {
+            PreparedLight::Point(position) => (Some(position.to_f64()), None),
+            PreparedLight::Direction(direction) => (None, Some(direction.to_f64())),
+        };
+        blocker_count = scene.objects.len();
+        for (receiver, bits) in blockers.iter_mut().enumerate().take(blocker_count) {
+            for blocker in 0..blocker_count.min(128) {
+                if blocker != receiver && scene.acceleration.may_block_object(receiver, blocker, light, direction) {
+                    *bits |= 1u128 << blocker;
+                }
+            }
+        }
+    }
+    let culling = ShadowCulling { light_cones, blockers: &blockers[..blocker_count] };
     let mut chunk = [fill; READ_CHUNK];
     for row in 0..camera.height() {
         for column in 0..camera.width() {
@@ -149,7 +167,7 @@ fn render<N, P, S, const MAX_OBJECTS: usize>(
                     continue;
                 }
             }
-            let value = match shade_pixel_cached(scene, pixel, statistics, &mut cache, light_cones) {
+            let value = match shade_pixel_cached(scene, pixel, statistics, &mut cache, &culling) {
                 ShadedPixel::Background => background,
                 ShadedPixel::Surface { material, lighting } => colour(&material, lighting, pixel),
             };
