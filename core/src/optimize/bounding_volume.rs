@@ -1,5 +1,7 @@
 //! The four stored bounding volumes of §4.7.1 (RTRACE.C `volume[4][8]`), one per primitive
 //! type, transformed to world space on demand (`transformvolume`) and never stored per object.
+//! NaN-safe comparisons (`!(x > y)`) are deliberate.
+#![allow(clippy::neg_cmp_op_on_partial_ord, clippy::needless_range_loop)]
 
 use crate::geometry::{AffineTransform, Matrix4};
 use crate::number::Number;

@@ -4,6 +4,7 @@
 //! Unlike the thesis, a volume with a vertex at or behind the eye plane (perspective, B16), or
 //! any volume when the parallel direction is parallel to the view plane (B17), has no usable
 //! projection: callers then treat it as covering the whole screen.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 use super::bounding_volume::{ObjectGeometry, MAX_POINTS};
 use crate::camera::Camera;
@@ -27,6 +28,7 @@ pub struct Screen {
 
 /// A projected object: the convex hull of its silhouette points in image coordinates.
 #[derive(Clone, Copy, Debug)]
+#[allow(clippy::large_enum_variant)]
 pub enum Projected {
     Points(Polygon),
     /// No usable projection: may cover any pixel.
@@ -151,7 +153,7 @@ impl Screen {
     pub fn pixel_range(low: f64, high: f64, count: u16) -> Option<(u16, u16)> {
         let first = libm::ceil(low - MARGIN).max(0.0);
         let last = libm::floor(high + MARGIN).min(f64::from(count) - 1.0);
-        (first <= last).then(|| (first as u16, last as u16))
+        (first <= last).then_some((first as u16, last as u16))
     }
 }
 

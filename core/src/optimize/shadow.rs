@@ -7,6 +7,7 @@
 //! segments are found exactly (Ericson, *Real-Time Collision Detection* §5.1.9), nearly
 //! parallel segments are always tested, and lengths use `length3` (which never overflows in
 //! narrow fixed-point types).
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 use crate::geometry::Vector3;
 use crate::number::Number;

@@ -217,7 +217,8 @@ fn table(report: &mut String, title: &str, file: &str, objects: u64, thesis: &[T
     header.push_str(" **All, improved** |");
     rule.push_str("---:|");
     writeln!(report, "{header}\n{rule}")?;
-    let rows: [(&str, fn(&Rendered) -> String); 5] = [
+    type Figure = fn(&Rendered) -> String;
+    let rows: [(&str, Figure); 5] = [
         ("shadow rays", |r| r.statistics.shadow_rays.to_string()),
         ("shadow tests", |r| r.statistics.shadow_tests.to_string()),
         ("shadow tests per shadow ray", |r| format!("{:.3}", ratio(r.statistics.shadow_tests, r.statistics.shadow_rays))),
