@@ -11,8 +11,10 @@ use super::projection::View;
 
 /// Sides of the polygons circumscribed about the circles of spheres, cylinders and cones.
 pub const SIDES: usize = 16;
-/// Most points a silhouette is built from.
-pub const MAX_POINTS: usize = 2 * SIDES;
+/// Most points a silhouette is built from (8, the volume's vertices, without the
+/// `acceleration-tables` feature, which then also leaves out the tight silhouettes to keep the
+/// stack small).
+pub const MAX_POINTS: usize = if super::TABLES { 2 * SIDES } else { 8 };
 
 /// The 8 vertices of each primitive's unit volume, in the thesis's order (digest §8.1).
 pub const VOLUMES: [[[f64; 3]; 8]; 4] = [
@@ -85,6 +87,9 @@ impl ObjectGeometry {
     /// the object, so projecting the points gives a conservative silhouette. `None` when the eye
     /// is inside a sphere.
     pub fn silhouette_points(&self, view: &View, out: &mut [[f64; 3]; MAX_POINTS]) -> Option<usize> {
+        if MAX_POINTS < 2 * SIDES {
+            return None;
+        }
         let grow = 1.0 / libm::cos(core::f64::consts::PI / SIDES as f64) * (1.0 + 1e-9);
         let ring = |k: usize| {
             let angle = 2.0 * core::f64::consts::PI * k as f64 / SIDES as f64;

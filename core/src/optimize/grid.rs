@@ -20,9 +20,11 @@ use super::projection::{Projected, Screen};
 
 /// Cells across and down (`GRIDCOL`, `GRIDROW`).
 pub const GRID_SIZE: u16 = 20;
-const CELLS: usize = GRID_SIZE as usize * GRID_SIZE as usize;
+/// No cells at all without the `acceleration-tables` feature (the grid is then inactive).
+const CELLS: usize = if super::TABLES { GRID_SIZE as usize * GRID_SIZE as usize } else { 0 };
 /// Pool entries per object: an object may overlap this many cells on average.
-pub const POOL_PER_OBJECT: usize = 24;
+/// Zero without the `acceleration-tables` feature: the grid is then always inactive.
+pub const POOL_PER_OBJECT: usize = if cfg!(feature = "acceleration-tables") { 24 } else { 0 };
 
 /// One cell entry: object number, then the columns and rows it may cover within the cell as
 /// `first | last << 8` offsets from the cell's corner.
@@ -55,6 +57,9 @@ impl<const MAX_OBJECTS: usize> Grid<MAX_OBJECTS> {
         cell_rectangles: bool,
     ) -> Self {
         let mut grid = Self::inactive();
+        if POOL_PER_OBJECT == 0 {
+            return grid;
+        }
         let (cell_width, cell_height) = ((screen.width - 1) / GRID_SIZE + 1, (screen.height - 1) / GRID_SIZE + 1);
         grid.cell_width = cell_width;
         grid.cell_height = cell_height;
@@ -126,7 +131,8 @@ impl<const MAX_OBJECTS: usize> Grid<MAX_OBJECTS> {
     pub fn cell(&self, column: u16, row: u16) -> (&[Entry], u16, u16) {
         let (cell_column, cell_row) = ((column / self.cell_width).min(GRID_SIZE - 1), (row / self.cell_height).min(GRID_SIZE - 1));
         let cell = usize::from(cell_row) * GRID_SIZE as usize + usize::from(cell_column);
-        let (start, end) = (usize::from(self.starts[cell]), usize::from(self.starts[cell + 1]));
+        let (Some(start), Some(end)) = (self.starts.get(cell), self.starts.get(cell + 1)) else { return (&[], 0, 0) };
+        let (start, end) = (usize::from(*start), usize::from(*end));
         let dx = (column - cell_column * self.cell_width).min(255);
         let dy = (row - cell_row * self.cell_height).min(255);
         (self.pool.as_flattened().get(start..end).unwrap_or(&[]), dx, dy)
@@ -134,7 +140,7 @@ impl<const MAX_OBJECTS: usize> Grid<MAX_OBJECTS> {
 
     /// Total entries over all cells.
     pub fn entries(&self) -> usize {
-        usize::from(self.starts[CELLS])
+        self.starts.get(CELLS).map_or(0, |entries| usize::from(*entries))
     }
 }
 

@@ -23,7 +23,12 @@ use bounding_volume::ObjectGeometry;
 use extents::Extent;
 use grid::Grid;
 use projection::Screen;
+#[cfg(feature = "acceleration-tables")]
 use shadow::ShadowBound;
+
+/// Whether the larger structures beyond the thesis are compiled in (the `acceleration-tables`
+/// feature): the grid pool, shadow capsules and tables, and the tight silhouettes.
+pub const TABLES: bool = cfg!(feature = "acceleration-tables");
 
 /// Choices beyond the thesis; [`Tuning::IMPROVED`] is the default, [`Tuning::THESIS`] is the
 /// thesis's own algorithms (the 8-vertex volumes, the extent grid, shadow rays unculled).
@@ -60,6 +65,7 @@ pub struct Acceleration<N, const MAX_OBJECTS: usize> {
     extents: [Extent; MAX_OBJECTS],
     /// Lower bound of the `t` of any hit on each object (`−N::MAX`: none known).
     near: [N; MAX_OBJECTS],
+    #[cfg(feature = "acceleration-tables")]
     shadow: [ShadowBound<N>; MAX_OBJECTS],
     grid: Grid<MAX_OBJECTS>,
 }
@@ -81,6 +87,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
             order: core::array::from_fn(|i| i as u16),
             extents: [Extent::whole(&screen); MAX_OBJECTS],
             near: [-N::MAX; MAX_OBJECTS],
+            #[cfg(feature = "acceleration-tables")]
             shadow: [ShadowBound::always(); MAX_OBJECTS],
             grid: Grid::inactive(),
         };
@@ -96,6 +103,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
                     acceleration.near[index] = N::from_f64(bound);
                 }
             }
+            #[cfg(feature = "acceleration-tables")]
             if tuning.shadow_culling && optimizations.extents {
                 let (start, end, radius) = geometry.bounding_capsule();
                 acceleration.shadow[index] = ShadowBound::new(start, end, radius);
@@ -148,7 +156,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
     /// Whether shadow rays are culled (shadow culling tuned on, with Extents).
     #[inline]
     pub fn culls_shadows(&self) -> bool {
-        self.tuning.shadow_culling && self.optimizations.extents
+        cfg!(feature = "acceleration-tables") && self.tuning.shadow_culling && self.optimizations.extents
     }
 
     /// Extents: whether the pixel lies outside the object's rectangle (skip it untested).
@@ -172,19 +180,31 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
     #[inline]
     /// Whether a shadow ray from `receiver` may meet `blocker` (see `shadow::may_block_object`).
     pub fn may_block_object(&self, receiver: usize, blocker: usize, light: Option<[f64; 3]>, direction: Option<[f64; 3]>) -> bool {
-        match (self.shadow.get(receiver), self.shadow.get(blocker)) {
-            (Some(r), Some(b)) => shadow::may_block_object(r, b, light, direction),
-            _ => true,
+        #[cfg(feature = "acceleration-tables")]
+        if let (Some(r), Some(b)) = (self.shadow.get(receiver), self.shadow.get(blocker)) {
+            return shadow::may_block_object(r, b, light, direction);
         }
+        let _ = (receiver, blocker, light, direction);
+        true
     }
 
     pub fn light_cone(&self, object: usize, light: Vector3<N>) -> (Vector3<N>, N) {
-        self.shadow.get(object).map_or((Vector3::zero(), -N::ONE), |bound| bound.light_cone(light))
+        #[cfg(feature = "acceleration-tables")]
+        if let Some(bound) = self.shadow.get(object) {
+            return bound.light_cone(light);
+        }
+        let _ = (object, light);
+        (Vector3::zero(), -N::ONE)
     }
 
     #[inline]
     pub fn may_shadow(&self, object: usize, point: Vector3<N>, direction: Vector3<N>, length: N) -> bool {
-        self.shadow.get(object).is_none_or(|bound| bound.may_block(point, direction, length))
+        #[cfg(feature = "acceleration-tables")]
+        if let Some(bound) = self.shadow.get(object) {
+            return bound.may_block(point, direction, length);
+        }
+        let _ = (object, point, direction, length);
+        true
     }
 
     pub fn screen(&self) -> &Screen {

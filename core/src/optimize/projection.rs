@@ -115,7 +115,7 @@ impl Screen {
             return Projected::Invisible;
         }
         let mut world = [[0.0; 3]; MAX_POINTS];
-        let count = if tight {
+        let count = if tight && super::TABLES {
             let Some(count) = geometry.silhouette_points(&self.view, &mut world) else { return Projected::Whole };
             count
         } else {

@@ -1,6 +1,7 @@
 //! Tracing a whole image, top row first (digest §3.4), into a [`PixelSink`].
 
 use super::shadow::{in_shadow_culled, ShadowCache, ShadowCulling};
+#[cfg(feature = "acceleration-tables")]
 use crate::geometry::Vector3;
 use super::primary::nearest_hit_cached;
 use super::Statistics;
@@ -118,36 +119,7 @@ fn render<N, P, S, const MAX_OBJECTS: usize>(
         fill_volumes(scene, sink, fill, flood);
     }
     let mut cache = ShadowCache::default();
-    // Shadow culling for a point light: each object's cone of directions from the light.
-    let mut light_cones = [(Vector3::zero(), -N::ONE); MAX_OBJECTS];
-    let mut cone_count = 0;
-    if let PreparedLight::Point(light) = scene.light {
-        if scene.shadows && scene.acceleration.culls_shadows() {
-            cone_count = scene.objects.len();
-            for (index, cone) in light_cones.iter_mut().enumerate().take(cone_count) {
-                *cone = scene.acceleration.light_cone(index, light);
-            }
-        }
-    }
-    let light_cones = &light_cones[..cone_count];
-    // And which objects may shadow which (receiver -> bits of possible blockers).
-    let mut blockers = [0u128; MAX_OBJECTS];
-    let mut blocker_count = 0;
-    if scene.shadows && scene.acceleration.culls_shadows() {
-        let (light, direction) = match scene.light {
-            PreparedLight::Point(position) => (Some(position.to_f64()), None),
-            PreparedLight::Direction(direction) => (None, Some(direction.to_f64())),
-        };
-        blocker_count = scene.objects.len();
-        for (receiver, bits) in blockers.iter_mut().enumerate().take(blocker_count) {
-            for blocker in 0..blocker_count.min(128) {
-                if blocker != receiver && scene.acceleration.may_block_object(receiver, blocker, light, direction) {
-                    *bits |= 1u128 << blocker;
-                }
-            }
-        }
-    }
-    let culling = ShadowCulling { light_cones, blockers: &blockers[..blocker_count] };
+    with_shadow_culling(scene, |culling| {
     let mut chunk = [fill; READ_CHUNK];
     for row in 0..camera.height() {
         for column in 0..camera.width() {
@@ -167,7 +139,7 @@ fn render<N, P, S, const MAX_OBJECTS: usize>(
                     continue;
                 }
             }
-            let value = match shade_pixel_cached(scene, pixel, statistics, &mut cache, &culling) {
+            let value = match shade_pixel_cached(scene, pixel, statistics, &mut cache, culling) {
                 ShadedPixel::Background => background,
                 ShadedPixel::Surface { material, lighting } => colour(&material, lighting, pixel),
             };
@@ -175,6 +147,7 @@ fn render<N, P, S, const MAX_OBJECTS: usize>(
         }
         sink.row_done(row);
     }
+    })
 }
 
 /// Pixelbuffer's preprocess (`initpga` and `rendervolume`): flood the viewport, then fill
@@ -216,4 +189,52 @@ where
             }
         }
     }
+}
+
+/// Runs `body` with the per-render shadow tables: for a point light each object's cone of
+/// directions from the light, and which objects may shadow which (on the stack: 48 bytes per
+/// object in f64). Without the `acceleration-tables` feature there are none.
+#[cfg(feature = "acceleration-tables")]
+fn with_shadow_culling<N: Number, R, const MAX_OBJECTS: usize>(
+    scene: &Scene<N, MAX_OBJECTS>,
+    body: impl FnOnce(&ShadowCulling<'_, N>) -> R,
+) -> R {
+    // Shadow culling for a point light: each object's cone of directions from the light.
+    let mut light_cones = [(Vector3::zero(), -N::ONE); MAX_OBJECTS];
+    let mut cone_count = 0;
+    if let PreparedLight::Point(light) = scene.light {
+        if scene.shadows && scene.acceleration.culls_shadows() {
+            cone_count = scene.objects.len().min(light_cones.len());
+            for (index, cone) in light_cones.iter_mut().enumerate().take(cone_count) {
+                *cone = scene.acceleration.light_cone(index, light);
+            }
+        }
+    }
+    let light_cones = &light_cones[..cone_count];
+    // And which objects may shadow which (receiver -> bits of possible blockers).
+    let mut blockers = [0u128; MAX_OBJECTS];
+    let mut blocker_count = 0;
+    if scene.shadows && scene.acceleration.culls_shadows() {
+        let (light, direction) = match scene.light {
+            PreparedLight::Point(position) => (Some(position.to_f64()), None),
+            PreparedLight::Direction(direction) => (None, Some(direction.to_f64())),
+        };
+        blocker_count = scene.objects.len().min(blockers.len());
+        for (receiver, bits) in blockers.iter_mut().enumerate().take(blocker_count) {
+            for blocker in 0..blocker_count.min(128) {
+                if blocker != receiver && scene.acceleration.may_block_object(receiver, blocker, light, direction) {
+                    *bits |= 1u128 << blocker;
+                }
+            }
+        }
+    }
+    body(&ShadowCulling { light_cones, blockers: &blockers[..blocker_count] })
+}
+
+#[cfg(not(feature = "acceleration-tables"))]
+fn with_shadow_culling<N: Number, R, const MAX_OBJECTS: usize>(
+    _scene: &Scene<N, MAX_OBJECTS>,
+    body: impl FnOnce(&ShadowCulling<'_, N>) -> R,
+) -> R {
+    body(&ShadowCulling::default())
 }
