@@ -15,6 +15,7 @@
 //! oblique object skips most pixels of the cells it crosses.
 
 use super::extents::Extent;
+use crate::number::Number;
 use super::pixelbuffer::band_span;
 use super::projection::{Projected, Screen};
 
@@ -33,18 +34,28 @@ pub type Entry = [u16; 3];
 const WHOLE_CELL: u16 = 0xFF00;
 
 #[derive(Clone, Debug)]
-pub struct Grid<const MAX_OBJECTS: usize> {
+pub struct Grid<N, const MAX_OBJECTS: usize> {
     /// False when the grid is off or its pool overflowed.
     pub active: bool,
     cell_width: u16,
     cell_height: u16,
     starts: [u16; CELLS + 1],
     pool: [[Entry; POOL_PER_OBJECT]; MAX_OBJECTS],
+    /// With Sortlist: each entry's lower bound of `t` for the part of its object seen through
+    /// the entry's rectangle (cell lists are sorted by it).
+    depth: [[N; POOL_PER_OBJECT]; MAX_OBJECTS],
 }
 
-impl<const MAX_OBJECTS: usize> Grid<MAX_OBJECTS> {
+impl<N: Number, const MAX_OBJECTS: usize> Grid<N, MAX_OBJECTS> {
     pub fn inactive() -> Self {
-        Self { active: false, cell_width: 1, cell_height: 1, starts: [0; CELLS + 1], pool: [[[0; 3]; POOL_PER_OBJECT]; MAX_OBJECTS] }
+        Self {
+            active: false,
+            cell_width: 1,
+            cell_height: 1,
+            starts: [0; CELLS + 1],
+            pool: [[[0; 3]; POOL_PER_OBJECT]; MAX_OBJECTS],
+            depth: [[-N::MAX; POOL_PER_OBJECT]; MAX_OBJECTS],
+        }
     }
 
     /// `order`: the objects in test order; `extents` indexed by object number; `polygon` gives
@@ -55,6 +66,7 @@ impl<const MAX_OBJECTS: usize> Grid<MAX_OBJECTS> {
         extents: &[Extent],
         polygon: impl Fn(usize) -> Projected,
         cell_rectangles: bool,
+        depth: Option<&dyn Fn(u16, (u16, u16), (u16, u16)) -> N>,
     ) -> Self {
         let mut grid = Self::inactive();
         if POOL_PER_OBJECT == 0 {
@@ -115,11 +127,37 @@ impl<const MAX_OBJECTS: usize> Grid<MAX_OBJECTS> {
         grid.starts[CELLS] = used as u16;
         let mut next: [u16; CELLS] = core::array::from_fn(|cell| grid.starts[cell]);
         let pool = grid.pool.as_flattened_mut();
+        let bounds = grid.depth.as_flattened_mut();
         for &object in order {
             visit(object, &mut |cell, entry| {
-                pool[usize::from(next[cell])] = entry;
+                let slot = usize::from(next[cell]);
+                pool[slot] = entry;
+                if let Some(depth) = depth {
+                    let origin = |packed: u16, size: u16, index: u16| {
+                        let corner = index * size;
+                        (corner + (packed & 0xFF), corner + (packed >> 8))
+                    };
+                    let (cell_row, cell_column) = ((cell / GRID_SIZE as usize) as u16, (cell % GRID_SIZE as usize) as u16);
+                    let columns = origin(entry[1], cell_width, cell_column);
+                    let rows = origin(entry[2], cell_height, cell_row);
+                    bounds[slot] = depth(object, columns, rows);
+                }
                 next[cell] += 1;
             });
+        }
+        // Sort each cell by its entries' bounds (stable: insertion sort).
+        if depth.is_some() {
+            for cell in 0..CELLS {
+                let (start, end) = (usize::from(grid.starts[cell]), usize::from(grid.starts[cell + 1]));
+                for i in start + 1..end {
+                    let mut j = i;
+                    while j > start && bounds[j] < bounds[j - 1] {
+                        bounds.swap(j, j - 1);
+                        pool.swap(j, j - 1);
+                        j -= 1;
+                    }
+                }
+            }
         }
         grid.active = true;
         grid
@@ -128,14 +166,14 @@ impl<const MAX_OBJECTS: usize> Grid<MAX_OBJECTS> {
     /// The entries of the cell holding image pixel (column, row), and the pixel's offsets
     /// from the cell's corner (saturated at 255).
     #[inline]
-    pub fn cell(&self, column: u16, row: u16) -> (&[Entry], u16, u16) {
+    pub fn cell(&self, column: u16, row: u16) -> (&[Entry], &[N], u16, u16) {
         let (cell_column, cell_row) = ((column / self.cell_width).min(GRID_SIZE - 1), (row / self.cell_height).min(GRID_SIZE - 1));
         let cell = usize::from(cell_row) * GRID_SIZE as usize + usize::from(cell_column);
-        let (Some(start), Some(end)) = (self.starts.get(cell), self.starts.get(cell + 1)) else { return (&[], 0, 0) };
+        let (Some(start), Some(end)) = (self.starts.get(cell), self.starts.get(cell + 1)) else { return (&[], &[], 0, 0) };
         let (start, end) = (usize::from(*start), usize::from(*end));
         let dx = (column - cell_column * self.cell_width).min(255);
         let dy = (row - cell_row * self.cell_height).min(255);
-        (self.pool.as_flattened().get(start..end).unwrap_or(&[]), dx, dy)
+        (self.pool.as_flattened().get(start..end).unwrap_or(&[]), self.depth.as_flattened().get(start..end).unwrap_or(&[]), dx, dy)
     }
 
     /// Total entries over all cells.

@@ -67,7 +67,7 @@ pub struct Acceleration<N, const MAX_OBJECTS: usize> {
     near: [N; MAX_OBJECTS],
     #[cfg(feature = "acceleration-tables")]
     shadow: [ShadowBound<N>; MAX_OBJECTS],
-    grid: Grid<MAX_OBJECTS>,
+    grid: Grid<N, MAX_OBJECTS>,
 }
 
 impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
@@ -118,15 +118,36 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
                 Some(geometry) => screen.project_object(&geometry, tuning.tight_silhouettes),
                 None => projection::Projected::Whole,
             };
-            acceleration.grid =
-                Grid::build(&screen, &acceleration.order[..count], &acceleration.extents[..count], polygon, tuning.cell_rectangles);
+            let near = acceleration.near;
+            let block_depth = |object: u16, columns: (u16, u16), rows: (u16, u16)| -> N {
+                let index = usize::from(object);
+                let global = near.get(index).copied().unwrap_or(-N::MAX);
+                let block = objects
+                    .get(index)
+                    .and_then(rendered_geometry::<N>)
+                    .and_then(|geometry| sortlist::block_depth_bound(&screen, &geometry, columns, rows));
+                match block {
+                    Some(bound) if N::from_f64(bound) > global => N::from_f64(bound),
+                    _ => global,
+                }
+            };
+            let depth: Option<&dyn Fn(u16, (u16, u16), (u16, u16)) -> N> =
+                if optimizations.sortlist && tuning.cell_rectangles { Some(&block_depth) } else { None };
+            acceleration.grid = Grid::build(
+                &screen,
+                &acceleration.order[..count],
+                &acceleration.extents[..count],
+                polygon,
+                tuning.cell_rectangles,
+                depth,
+            );
         }
         acceleration
     }
 
     /// Grid: the entries of the pixel's cell and the pixel's offsets in it; `None` without a grid.
     #[inline]
-    pub fn grid_cell(&self, pixel: PixelPosition) -> Option<(&[grid::Entry], u16, u16)> {
+    pub fn grid_cell(&self, pixel: PixelPosition) -> Option<(&[grid::Entry], &[N], u16, u16)> {
         self.grid.active.then(|| self.grid.cell(pixel.column, pixel.row))
     }
 
@@ -145,6 +166,12 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
     #[inline]
     pub fn in_extent(&self, object: usize, pixel: PixelPosition) -> bool {
         self.extents.get(object).is_some_and(|extent| extent.contains(pixel.column, pixel.row))
+    }
+
+    /// Sortlist is on (for the grid's per-entry bounds).
+    #[inline]
+    pub fn sorts(&self) -> bool {
+        self.optimizations.sortlist
     }
 
     /// Whether primary rays try the previous hit object first.

@@ -96,6 +96,11 @@ impl Screen {
         }
     }
 
+    /// Continuous image (column, row from the top) to view-plane (x, y).
+    pub fn to_view_plane(&self, column: f64, row: f64) -> [f64; 2] {
+        [self.x0 + column * self.spacing_x, self.y0 + (f64::from(self.height - 1) - row) * self.spacing_y]
+    }
+
     /// View-plane (x, y) to continuous image (column, row from the top).
     pub fn to_image(&self, point: [f64; 2]) -> [f64; 2] {
         let column = if self.spacing_x > 0.0 { (point[0] - self.x0) / self.spacing_x } else { 0.0 };

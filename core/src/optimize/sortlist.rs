@@ -47,3 +47,103 @@ pub fn sort_by_bound<T: PartialOrd + Copy>(order: &mut [u16], bound: impl Fn(usi
         }
     }
 }
+
+/// A lower bound of `t` for the part of a cylinder or cone seen through a block of pixels
+/// (columns and rows inclusive): the object lies within `radius` of its axis, so an axis point
+/// can matter only if it is within `radius` of each of the planes bounding the rays through the
+/// block (widened by the projection margin); the bound is the nearest such axis point's `t`
+/// less the radius. `None` for other primitives or when no bound is found. Lowered for
+/// rounding like [`depth_bound`].
+pub fn block_depth_bound(screen: &Screen, geometry: &ObjectGeometry, columns: (u16, u16), rows: (u16, u16)) -> Option<f64> {
+    use crate::scene::Primitive;
+    if !matches!(geometry.primitive, Primitive::Cylinder | Primitive::Cone) {
+        return None;
+    }
+    let (a, b, radius) = geometry.bounding_capsule();
+    let m = super::projection::MARGIN + 0.01;
+    let low = screen.to_view_plane(f64::from(columns.0) - m, f64::from(rows.1) + m);
+    let high = screen.to_view_plane(f64::from(columns.1) + m, f64::from(rows.0) - m);
+    let ab = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
+    // Constraints g·p + k ≥ 0 on the points seen through the block.
+    let mut constraints = [([0.0; 3], 0.0); 5];
+    let depth_of: [f64; 3];
+    let mut depth_offset = 0.0;
+    let slack: f64;
+    match screen.view {
+        View::Perspective { eye: e } => {
+            let span = screen.view_plane - e[2];
+            if span == 0.0 {
+                return None;
+            }
+            // X(p) ≥ low.x ⟺ (p.x − e.x) − (low.x − e.x)(p.z − e.z)/span ≥ 0, and so on.
+            let f = |x: f64, axis: usize, sign: f64| {
+                let mut g = [0.0; 3];
+                g[axis] = sign;
+                g[2] = -sign * (x - e[axis]) / span;
+                (g, -dot(g, e))
+            };
+            constraints[0] = f(low[0], 0, 1.0);
+            constraints[1] = f(high[0], 0, -1.0);
+            constraints[2] = f(low[1], 1, 1.0);
+            constraints[3] = f(high[1], 1, -1.0);
+            let sign = if span > 0.0 { 1.0 } else { -1.0 };
+            constraints[4] = ([0.0, 0.0, sign], -sign * e[2]);
+            depth_of = e;
+            slack = radius;
+        }
+        View::Parallel { direction: d } => {
+            if d[2].abs() < 1e-6 {
+                return None;
+            }
+            // X(p) = p.x − (d.x/d.z)(p.z − D) ≥ low.x, and so on; t(p) = (p.z − D)/d.z.
+            let f = |x: f64, axis: usize, sign: f64| {
+                let mut g = [0.0; 3];
+                g[axis] = sign;
+                g[2] = -sign * d[axis] / d[2];
+                (g, sign * (d[axis] / d[2] * screen.view_plane - x))
+            };
+            constraints[0] = f(low[0], 0, 1.0);
+            constraints[1] = f(high[0], 0, -1.0);
+            constraints[2] = f(low[1], 1, 1.0);
+            constraints[3] = f(high[1], 1, -1.0);
+            constraints[4] = constraints[0];
+            depth_of = [0.0, 0.0, 1.0 / d[2]];
+            depth_offset = -screen.view_plane / d[2];
+            slack = radius / d[2].abs();
+        }
+    }
+    // The range of s ∈ [0, 1] on the axis a + s·ab meeting every relaxed constraint.
+    let (mut s_low, mut s_high) = (0.0f64, 1.0f64);
+    for (g, k) in constraints {
+        let norm = libm::sqrt(dot(g, g));
+        let (value, rate) = (dot(g, a) + k + radius * norm, dot(g, ab));
+        if rate == 0.0 {
+            if value < 0.0 {
+                return Some(f64::MAX);
+            }
+        } else if rate > 0.0 {
+            s_low = s_low.max(-value / rate);
+        } else {
+            s_high = s_high.min(-value / rate);
+        }
+    }
+    if !(s_low <= s_high) {
+        return Some(f64::MAX);
+    }
+    let nearest = match screen.view {
+        View::Perspective { .. } => {
+            let e = depth_of;
+            let squared = dot(ab, ab);
+            let s = if squared > 0.0 { (dot([e[0] - a[0], e[1] - a[1], e[2] - a[2]], ab) / squared).clamp(s_low, s_high) } else { s_low };
+            let p = [a[0] + s * ab[0], a[1] + s * ab[1], a[2] + s * ab[2]];
+            let v = [p[0] - e[0], p[1] - e[1], p[2] - e[2]];
+            libm::sqrt(dot(v, v))
+        }
+        View::Parallel { .. } => {
+            let at = |s: f64| dot(depth_of, [a[0] + s * ab[0], a[1] + s * ab[1], a[2] + s * ab[2]]) + depth_offset;
+            at(s_low).min(at(s_high))
+        }
+    };
+    let bound = nearest - slack;
+    bound.is_finite().then(|| bound - 1e-3 * (bound.abs() + 1.0))
+}

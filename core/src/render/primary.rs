@@ -83,9 +83,22 @@ pub fn nearest_hit_cached<N: Number, const MAX_OBJECTS: usize>(
         }
         true
     };
-    if let Some((entries, dx, dy)) = acceleration.grid_cell(pixel) {
-        for entry in entries {
-            if entry_covers(entry, dx, dy) && !test(usize::from(entry[0]), &mut nearest) {
+    if let Some((entries, depths, dx, dy)) = acceleration.grid_cell(pixel) {
+        let sorts = acceleration.sorts();
+        for (position, entry) in entries.iter().enumerate() {
+            if !entry_covers(entry, dx, dy) {
+                continue;
+            }
+            // The cell list is sorted by these bounds: once one exceeds the nearest hit, so do
+            // all later ones (strictly, so an equal t is still tested).
+            if sorts {
+                if let (Some(best), Some(depth)) = (nearest, depths.get(position)) {
+                    if *depth > best.t {
+                        break;
+                    }
+                }
+            }
+            if !test(usize::from(entry[0]), &mut nearest) {
                 break;
             }
         }
