@@ -27,6 +27,9 @@ const CELLS: usize = if super::TABLES { GRID_SIZE as usize * GRID_SIZE as usize 
 /// Zero without the `acceleration-tables` feature: the grid is then always inactive.
 pub const POOL_PER_OBJECT: usize = if cfg!(feature = "acceleration-tables") { 24 } else { 0 };
 
+/// A per-entry depth bound: (object, columns, rows) -> lower bound of `t`.
+pub type BlockDepth<'a, N> = dyn Fn(u16, (u16, u16), (u16, u16)) -> N + 'a;
+
 /// One cell entry: object number, then the columns and rows it may cover within the cell as
 /// `first | last << 8` offsets from the cell's corner.
 pub type Entry = [u16; 3];
@@ -66,7 +69,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Grid<N, MAX_OBJECTS> {
         extents: &[Extent],
         polygon: impl Fn(usize) -> Projected,
         cell_rectangles: bool,
-        depth: Option<&dyn Fn(u16, (u16, u16), (u16, u16)) -> N>,
+        depth: Option<&BlockDepth<'_, N>>,
     ) -> Self {
         let mut grid = Self::inactive();
         if POOL_PER_OBJECT == 0 {

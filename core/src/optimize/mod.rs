@@ -131,7 +131,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
                     _ => global,
                 }
             };
-            let depth: Option<&dyn Fn(u16, (u16, u16), (u16, u16)) -> N> =
+            let depth: Option<&grid::BlockDepth<'_, N>> =
                 if optimizations.sortlist && tuning.cell_rectangles { Some(&block_depth) } else { None };
             acceleration.grid = Grid::build(
                 &screen,

@@ -127,7 +127,7 @@ pub fn block_depth_bound(screen: &Screen, geometry: &ObjectGeometry, columns: (u
             s_high = s_high.min(-value / rate);
         }
     }
-    if !(s_low <= s_high) {
+    if s_low.partial_cmp(&s_high).is_none_or(|order| order.is_gt()) {
         return Some(f64::MAX);
     }
     let nearest = match screen.view {
