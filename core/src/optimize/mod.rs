@@ -165,7 +165,10 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
     /// are not computed).
     #[inline]
     pub fn in_extent(&self, object: usize, pixel: PixelPosition) -> bool {
-        self.extents.get(object).is_some_and(|extent| extent.contains(pixel.column, pixel.row))
+        self.extents.get(object).is_some_and(|extent| {
+            extent.contains(pixel.column, pixel.row)
+                && (!self.tuning.tight_silhouettes || extent.diagonals_contain(pixel.column, pixel.row, self.screen.height))
+        })
     }
 
     /// Sortlist is on (for the grid's per-entry bounds).

@@ -46,7 +46,7 @@ pub enum View {
 /// Margin in pixels added around every projected shape: covers the rounding of the number
 /// type's rays and intersections (a hit is never found more than a small fraction of a pixel
 /// outside the exact silhouette).
-pub const MARGIN: f64 = 0.5;
+pub const MARGIN: f64 = 0.1;
 
 impl Screen {
     pub fn new<N: Number>(camera: &Camera<N>) -> Self {
