@@ -1,13 +1,270 @@
-//! `microtrace view`: not written yet.
+//! `microtrace view SCENE.mts`: watch a scene render in a simulator window (issue 6).
+//!
+//! The image is traced by the same core through the same `PixelSink`/`PixelSource` path as the
+//! firmware and appears row by row from the top; the panel shows the settings, the statistics
+//! and the render time, the key help, and a preview of the firmware's 128x64 grey OLED.
 
 use std::path::PathBuf;
+use std::time::Instant;
 
-#[derive(clap::Args)]
+use anyhow::Context;
+use embedded_graphics::pixelcolor::Rgb888 as EgRgb888;
+use embedded_graphics::prelude::*;
+use embedded_graphics_simulator::{OutputSettings, OutputSettingsBuilder, SimulatorDisplay, SimulatorEvent};
+use microtrace::pixel::FrameBuffer;
+use microtrace::render::{render_pga, render_rgb, Statistics};
+use microtrace::scene::{Optimizations, Scene};
+
+use crate::commands::render::statistics_table;
+use crate::files;
+use crate::number_type::NumberType;
+use crate::rendering::{Mode, Pixels, Rendered};
+use crate::scene_file::{self, parse_optimizations, parse_size, parse_switch, HostScene, HOST_MAX_OBJECTS};
+use crate::with_number_type;
+
+#[path = "../view/mod.rs"]
+pub mod ui;
+
+use ui::keys::{self, Action};
+use ui::overlay::ScreenExtent;
+use ui::window::View;
+
+#[derive(clap::Args, Clone, Debug)]
 pub struct ViewArgs {
-    /// The scene to show.
+    /// The scene to show (.mts).
     pub scene: PathBuf,
+    /// The number type to trace in (N cycles it in the window).
+    #[arg(long, value_enum, default_value = "f64")]
+    pub number: NumberType,
+    /// PGA palette mode or 24-bit RGB mode (M switches).
+    #[arg(long, value_enum, default_value = "pga")]
+    pub mode: Mode,
+    /// Replace the viewport by W x H pixels.
+    #[arg(long, value_name = "WxH", value_parser = parse_size)]
+    pub size: Option<(u16, u16)>,
+    /// Override the scene's `optimize` statement: all, none, or a list like extents,grid.
+    #[arg(long, value_name = "LIST", value_parser = parse_optimizations)]
+    pub opt: Option<Optimizations>,
+    /// Override the scene's `shadows` statement.
+    #[arg(long, value_name = "on|off", value_parser = parse_switch)]
+    pub shadows: Option<bool>,
+    /// Override the scene's `dither` statement.
+    #[arg(long, value_name = "on|off", value_parser = parse_switch)]
+    pub dither: Option<bool>,
+    /// Show each window pixel as N x N screen pixels (for small scenes).
+    #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=16))]
+    pub scale: u32,
+    /// Start with the optimization overlay on (O toggles it).
+    #[arg(long)]
+    pub overlay: bool,
+    /// Render fully, save the finished window (image, overlay, panel) to FILE.png and exit.
+    #[arg(long, value_name = "FILE.png")]
+    pub screenshot: Option<PathBuf>,
+    /// Close the window when the render has finished.
+    #[arg(long)]
+    pub exit_when_done: bool,
 }
 
-pub fn run(_args: ViewArgs) -> anyhow::Result<()> {
-    anyhow::bail!("view is not implemented yet; use `microtrace render SCENE --out IMAGE.png`")
+/// What the keys change.
+struct Settings {
+    number: NumberType,
+    mode: Mode,
+    overlay: bool,
+}
+
+/// One finished render: the image, its statistics and what the overlay draws.
+struct Finished {
+    rendered: Rendered,
+    extents: Vec<ScreenExtent>,
+}
+
+pub fn run(args: ViewArgs) -> anyhow::Result<()> {
+    let mut scene = scene_file::load(&args.scene)?;
+    if let Some((width, height)) = args.size {
+        scene.fit_to_size(width, height);
+    }
+    if let Some(optimizations) = args.opt {
+        scene.optimizations = optimizations;
+    }
+    if let Some(shadows) = args.shadows {
+        scene.shadows = shadows;
+    }
+    if let Some(dither) = args.dither {
+        scene.dither = dither;
+    }
+    let (width, height) = (u32::from(scene.viewport.width()), u32::from(scene.viewport.height()));
+    let panel_x = width + 8;
+    let window_size = Size::new(panel_x + ui::panel::WIDTH, height.max(ui::oled::HEIGHT as u32 * ui::oled::ZOOM + 12 + ui::panel::height(14)));
+    let mut display = SimulatorDisplay::<EgRgb888>::new(window_size);
+    let output = OutputSettingsBuilder::new().scale(args.scale).build();
+    let title = format!("MicroTrace — {}", args.scene.display());
+    let mut view = View::open(&title, &output, &display)?;
+    let mut settings = Settings { number: args.number, mode: args.mode, overlay: args.overlay };
+
+    loop {
+        let finished = render(&scene, &settings, &mut display, &mut view)?;
+        eprint!("{}", statistics_table(&finished.rendered));
+        eprintln!(
+            "preprocess {:.1} ms, trace {:.1} ms ({} {} {})",
+            finished.rendered.preprocess.as_secs_f64() * 1e3,
+            finished.rendered.trace.as_secs_f64() * 1e3,
+            settings.number.name(),
+            mode_name(settings.mode),
+            optimization_names(scene.optimizations)
+        );
+        let oled = ui::oled::render(&scene, settings.number)?;
+        draw_finished(&scene, &settings, &finished, &oled, &mut display, Point::new(panel_x as i32, 4));
+        view.update(&display);
+        if let Some(path) = &args.screenshot {
+            display
+                .to_rgb_output_image(&OutputSettings::default())
+                .save_png(path)
+                .with_context(|| format!("cannot write the screenshot {}", path.display()))?;
+            eprintln!("screenshot written to {}", path.display());
+            return Ok(());
+        }
+        if args.exit_when_done {
+            return Ok(());
+        }
+        // Wait for a key that changes something.
+        'waiting: loop {
+            for event in view.update(&display) {
+                let action = match event {
+                    SimulatorEvent::Quit => return Ok(()),
+                    SimulatorEvent::KeyDown { keycode, repeat: false, .. } => keys::action(keycode),
+                    _ => None,
+                };
+                let Some(action) = action else { continue };
+                let o = &mut scene.optimizations;
+                match action {
+                    Action::Quit => return Ok(()),
+                    Action::TogglePixelbuffer => o.pixelbuffer = !o.pixelbuffer,
+                    Action::ToggleExtents => o.extents = !o.extents,
+                    Action::ToggleGrid => o.grid = !o.grid,
+                    Action::ToggleSortlist => o.sortlist = !o.sortlist,
+                    Action::CycleNumber => {
+                        let all = NumberType::ALL;
+                        let at = all.iter().position(|n| *n == settings.number).unwrap_or(0);
+                        settings.number = all[(at + 1) % all.len()];
+                    }
+                    Action::SwitchMode => settings.mode = if settings.mode == Mode::Pga { Mode::Rgb } else { Mode::Pga },
+                    Action::ToggleDither => scene.dither = !scene.dither,
+                    Action::ToggleShadows => scene.shadows = !scene.shadows,
+                    Action::ToggleOverlay => {
+                        settings.overlay = !settings.overlay;
+                        draw_finished(&scene, &settings, &finished, &oled, &mut display, Point::new(panel_x as i32, 4));
+                        continue;
+                    }
+                    Action::SavePng => {
+                        save_png(&args, &finished.rendered);
+                        continue;
+                    }
+                }
+                break 'waiting;
+            }
+        }
+    }
+}
+
+fn mode_name(mode: Mode) -> &'static str {
+    match mode {
+        Mode::Pga => "PGA",
+        Mode::Rgb => "RGB",
+    }
+}
+
+fn optimization_names(o: Optimizations) -> String {
+    let names: Vec<&str> = [(o.pixelbuffer, "Pb"), (o.extents, "Ex"), (o.grid, "Gd"), (o.sortlist, "Sl")]
+        .iter()
+        .filter_map(|(on, name)| on.then_some(*name))
+        .collect();
+    if names.is_empty() { "no optimizations".into() } else { names.join(",") }
+}
+
+/// Saves the image (not the panel) next to the scene, numbered so no file is overwritten.
+fn save_png(args: &ViewArgs, rendered: &Rendered) {
+    let stem = args.scene.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_else(|| "view".into());
+    let path = (1..).map(|n| PathBuf::from(format!("{stem}-view-{n}.png"))).find(|p| !p.exists()).expect("a free name");
+    match files::write_png_rgb(&path, rendered.width(), rendered.height(), &rendered.to_rgb()) {
+        Ok(()) => eprintln!("saved {}", path.display()),
+        Err(error) => eprintln!("microtrace: cannot write {}: {error}", path.display()),
+    }
+}
+
+/// Clears the window and traces the scene into it row by row, updating the window as it goes.
+fn render(scene: &HostScene, settings: &Settings, display: &mut SimulatorDisplay<EgRgb888>, view: &mut View) -> anyhow::Result<Finished> {
+    let _ = display.clear(EgRgb888::BLACK);
+    view.update(display);
+    let viewport = scene.viewport;
+    let (width, height) = (viewport.width(), viewport.height());
+    let count = usize::from(width) * usize::from(height);
+    let palette = scene.palette;
+    with_number_type!(settings.number, N => {
+        let started = Instant::now();
+        let prepared = Box::new(Scene::<N, HOST_MAX_OBJECTS>::prepare(scene).map_err(|error| anyhow::anyhow!("{error}"))?);
+        let preprocess = started.elapsed();
+        let extents = (0..scene.objects.len())
+            .filter_map(|i| prepared.acceleration.extent(i))
+            .map(|e| ScreenExtent { columns: (e.first_column, e.last_column), rows: (e.first_row, e.last_row) })
+            .collect();
+        let mut statistics = Statistics::default();
+        let started = Instant::now();
+        let pixels = match settings.mode {
+            Mode::Pga => {
+                let mut buffer = vec![0u8; count];
+                let frame = FrameBuffer::new(&mut buffer, width, height).expect("buffer sized to the viewport");
+                let mut sink = ui::sink::WindowSink::new(frame, display, &palette, Some(view));
+                render_pga(&*prepared, &mut sink, &mut statistics);
+                Pixels::Pga(buffer)
+            }
+            Mode::Rgb => {
+                let mut buffer = vec![[0u8; 3]; count];
+                let frame = FrameBuffer::new(&mut buffer, width, height).expect("buffer sized to the viewport");
+                let mut sink = ui::sink::WindowSink::new(frame, display, &palette, Some(view));
+                render_rgb(&*prepared, &mut sink, &mut statistics);
+                Pixels::Rgb(buffer)
+            }
+        };
+        let trace = started.elapsed();
+        Ok(Finished { rendered: Rendered { viewport, palette, pixels, statistics, preprocess, trace }, extents })
+    })
+}
+
+/// Redraws the image (with the overlay if on), the OLED preview and the panel.
+fn draw_finished(
+    scene: &HostScene,
+    settings: &Settings,
+    finished: &Finished,
+    oled: &SimulatorDisplay<embedded_graphics::pixelcolor::Gray4>,
+    display: &mut SimulatorDisplay<EgRgb888>,
+    panel: Point,
+) {
+    let _ = display.clear(EgRgb888::BLACK);
+    let rendered = &finished.rendered;
+    let width = usize::from(rendered.width());
+    let pixels = rendered.to_rgb().into_iter().enumerate().map(|(i, [r, g, b])| Pixel(Point::new((i % width) as i32, (i / width) as i32), EgRgb888::new(r, g, b)));
+    let _ = display.draw_iter(pixels);
+    if settings.overlay {
+        ui::overlay::draw(&finished.extents, display);
+    }
+    ui::oled::draw(oled, display, panel + Point::new(1, 1));
+    let s = &rendered.statistics;
+    let lines = vec![
+        format!("OLED 128x64 preview (above)"),
+        format!("{}x{} {} {}", rendered.width(), rendered.height(), settings.number.name(), mode_name(settings.mode)),
+        format!("opt {}", optimization_names(scene.optimizations)),
+        format!("shadows {}  dither {}  overlay {}", on(scene.shadows), on(scene.dither), on(settings.overlay)),
+        format!("preprocess {:.1} ms", rendered.preprocess.as_secs_f64() * 1e3),
+        format!("trace      {:.1} ms", rendered.trace.as_secs_f64() * 1e3),
+        format!("pixels {}  traced {}", s.pixels, s.rays_traced),
+        format!("ray-object tests {}", s.ro_tests),
+        format!("ray-object hits  {}", s.ro_hits),
+        format!("shadow rays {} tests {}", s.shadow_rays, s.shadow_tests),
+    ];
+    let y = panel.y + (ui::oled::HEIGHT as u32 * ui::oled::ZOOM) as i32 + 8;
+    ui::panel::draw(&lines, display, Point::new(panel.x, y));
+}
+
+fn on(value: bool) -> &'static str {
+    if value { "on" } else { "off" }
 }

@@ -1,0 +1,34 @@
+//! The overlay of what the optimizations see (thesis figures 4.14, 4.15): each object's screen
+//! extent as the core's Extents optimization computed it (`Scene::acceleration`).
+
+use embedded_graphics::pixelcolor::Rgb888;
+use embedded_graphics::prelude::*;
+use embedded_graphics::primitives::{PrimitiveStyle, Rectangle};
+use embedded_graphics_simulator::SimulatorDisplay;
+
+/// One object's screen extent: first and last column, first and last row.
+#[derive(Clone, Copy, Debug)]
+pub struct ScreenExtent {
+    pub columns: (u16, u16),
+    pub rows: (u16, u16),
+}
+
+const COLOURS: [Rgb888; 6] = [
+    Rgb888::new(255, 255, 0),
+    Rgb888::new(0, 255, 255),
+    Rgb888::new(255, 0, 255),
+    Rgb888::new(0, 255, 0),
+    Rgb888::new(255, 128, 0),
+    Rgb888::new(128, 160, 255),
+];
+
+pub fn draw(extents: &[ScreenExtent], target: &mut SimulatorDisplay<Rgb888>) {
+    for (index, extent) in extents.iter().enumerate() {
+        if extent.columns.0 > extent.columns.1 || extent.rows.0 > extent.rows.1 {
+            continue;
+        }
+        let top_left = Point::new(i32::from(extent.columns.0), i32::from(extent.rows.0));
+        let size = Size::new(u32::from(extent.columns.1 - extent.columns.0) + 1, u32::from(extent.rows.1 - extent.rows.0) + 1);
+        let _ = Rectangle::new(top_left, size).into_styled(PrimitiveStyle::with_stroke(COLOURS[index % COLOURS.len()], 1)).draw(target);
+    }
+}
