@@ -1,0 +1,152 @@
+//! The simulator window of `microtrace view`, tested for real: under an X server (Xvfb started
+//! here if DISPLAY is unset), open the window on a thesis scene, let it render, save the
+//! window's contents with the simulator's own output image (`--screenshot`), and compare the
+//! image area with the headless `microtrace render` of the same scene pixel for pixel.
+//!
+//! Needs (Debian): libsdl2-dev (build), xvfb (X server). Without a display and without Xvfb the
+//! test fails under CI (CI=true) and is skipped locally.
+
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+use std::time::Duration;
+
+fn workspace() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).parent().expect("workspace root").to_path_buf()
+}
+
+/// Builds the `microtrace` binary and returns its path.
+fn microtrace_binary() -> PathBuf {
+    let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
+    let status = Command::new(cargo)
+        .args(["build", "-q", "-p", "microtrace-sim", "--bin", "microtrace"])
+        .current_dir(workspace())
+        .status()
+        .expect("run cargo build");
+    assert!(status.success(), "cargo build -p microtrace-sim failed");
+    let target = std::env::var_os("CARGO_TARGET_DIR").map(PathBuf::from).unwrap_or_else(|| workspace().join("target"));
+    let target = if target.is_absolute() { target } else { workspace().join(target) };
+    target.join("debug").join("microtrace")
+}
+
+struct Xvfb(Child);
+
+impl Drop for Xvfb {
+    fn drop(&mut self) {
+        let _ = self.0.kill();
+        let _ = self.0.wait();
+    }
+}
+
+/// A display to open the window on: `DISPLAY` if set, else a private Xvfb.
+fn display() -> Option<(String, Option<Xvfb>)> {
+    if let Ok(display) = std::env::var("DISPLAY") {
+        if !display.is_empty() {
+            return Some((display, None));
+        }
+    }
+    let number = 90 + std::process::id() % 100;
+    let child = Command::new("Xvfb")
+        .args([format!(":{number}"), "-screen".into(), "0".into(), "1024x768x24".into(), "-nolisten".into(), "tcp".into()])
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .ok()?;
+    let xvfb = Xvfb(child);
+    // Wait for the server's socket.
+    let socket = PathBuf::from(format!("/tmp/.X11-unix/X{number}"));
+    for _ in 0..100 {
+        if socket.exists() {
+            return Some((format!(":{number}"), Some(xvfb)));
+        }
+        std::thread::sleep(Duration::from_millis(50));
+    }
+    None
+}
+
+fn read_png(path: &Path) -> (u32, u32, Vec<[u8; 3]>) {
+    let mut decoder = png::Decoder::new(std::io::BufReader::new(std::fs::File::open(path).expect("open png")));
+    decoder.set_transformations(png::Transformations::EXPAND | png::Transformations::STRIP_16);
+    let mut reader = decoder.read_info().expect("png header");
+    let mut buffer = vec![0; reader.output_buffer_size().expect("size")];
+    let info = reader.next_frame(&mut buffer).expect("png data");
+    let channels = info.color_type.samples();
+    let pixels = buffer[..info.buffer_size()]
+        .chunks(channels)
+        .map(|c| if channels >= 3 { [c[0], c[1], c[2]] } else { [c[0], c[0], c[0]] })
+        .collect();
+    (info.width, info.height, pixels)
+}
+
+fn check_scene(binary: &Path, display: &str, scene: &str, extra: &[&str]) {
+    let dir = std::env::temp_dir().join(format!("microtrace-view-{}-{scene}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene_path = workspace().join("scenes").join(format!("{scene}.mts"));
+    let shot = dir.join("window.png");
+    let reference = dir.join("render.png");
+    let output = Command::new(binary)
+        .arg("view")
+        .arg(&scene_path)
+        .args(["--size", "132x120", "--screenshot"])
+        .arg(&shot)
+        .args(extra)
+        .env("DISPLAY", display)
+        .output()
+        .expect("run microtrace view");
+    assert!(output.status.success(), "microtrace view failed: {}", String::from_utf8_lossy(&output.stderr));
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(stderr.contains("rays traced") && stderr.contains("trace"), "statistics not printed: {stderr}");
+    let status = Command::new(binary)
+        .arg("render")
+        .arg(&scene_path)
+        .args(["--size", "132x120", "--out"])
+        .arg(&reference)
+        .args(extra)
+        .status()
+        .expect("run microtrace render");
+    assert!(status.success());
+    let (width, height, expected) = read_png(&reference);
+    let (window_width, window_height, window) = read_png(&shot);
+    assert!(window_width > width && window_height >= height, "window {window_width}x{window_height} smaller than the image");
+    let mut differing = 0;
+    for y in 0..height {
+        for x in 0..width {
+            if window[(y * window_width + x) as usize] != expected[(y * width + x) as usize] {
+                differing += 1;
+            }
+        }
+    }
+    assert_eq!(differing, 0, "{scene} {extra:?}: {differing} pixels of the window's image area differ from `render` ({})", dir.display());
+    // The panel is drawn: something lit to the right of the image.
+    let panel_lit = (0..window_height).any(|y| (width + 8..window_width).any(|x| window[(y * window_width + x) as usize] != [0, 0, 0]));
+    assert!(panel_lit, "the panel is empty");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn window_shows_the_same_image_as_render() {
+    let Some((display, _xvfb)) = display() else {
+        let message = "no X display: set DISPLAY or install Xvfb (Debian: xvfb) to test the simulator window";
+        if std::env::var("CI").is_ok_and(|v| v == "true" || v == "1") {
+            panic!("{message}");
+        }
+        eprintln!("skipped: {message}");
+        return;
+    };
+    let binary = microtrace_binary();
+    check_scene(&binary, &display, "snooker", &[]);
+    check_scene(&binary, &display, "lattice", &["--mode", "rgb"]);
+    check_scene(&binary, &display, "snooker", &["--number", "f32", "--opt", "none", "--dither", "on"]);
+}
+
+#[test]
+fn no_display_points_at_render() {
+    let binary = microtrace_binary();
+    let scene = workspace().join("scenes").join("snooker.mts");
+    let output = Command::new(&binary).arg("view").arg(&scene).env_remove("DISPLAY").env_remove("WAYLAND_DISPLAY").output().unwrap();
+    assert!(!output.status.success());
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(stderr.contains("microtrace render"), "{stderr}");
+    let output = Command::new(&binary).args(["view", "no-such-scene.mts"]).output().unwrap();
+    assert!(!output.status.success());
+    assert!(String::from_utf8_lossy(&output.stderr).contains("no-such-scene.mts"));
+}
