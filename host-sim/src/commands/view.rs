@@ -76,6 +76,15 @@ struct Settings {
 struct Finished {
     rendered: Rendered,
     extents: Vec<ScreenExtent>,
+    grid: ui::overlay::GridLines,
+}
+
+/// Where the Grid's cells start (from `Acceleration::grid_cell`); empty without the Grid.
+fn grid_lines<N: microtrace::number::Number>(acceleration: &microtrace::optimize::Acceleration<N, HOST_MAX_OBJECTS>, width: u16, height: u16) -> ui::overlay::GridLines {
+    let at = |column, row| microtrace::camera::PixelPosition { column, row, screen_x: 0, screen_y: 0 };
+    let columns = (1..width).filter(|&x| acceleration.grid_cell(at(x, 0)).is_some_and(|(_, _, dx, _)| dx == 0)).collect();
+    let rows = (1..height).filter(|&y| acceleration.grid_cell(at(0, y)).is_some_and(|(_, _, _, dy)| dy == 0)).collect();
+    ui::overlay::GridLines { columns, rows, width, height }
 }
 
 pub fn run(args: ViewArgs) -> anyhow::Result<()> {
@@ -207,6 +216,7 @@ fn render(scene: &HostScene, settings: &Settings, display: &mut SimulatorDisplay
             .filter_map(|i| prepared.acceleration.extent(i))
             .map(|e| ScreenExtent { columns: (e.first_column, e.last_column), rows: (e.first_row, e.last_row) })
             .collect();
+        let grid = grid_lines(&prepared.acceleration, width, height);
         let mut statistics = Statistics::default();
         let started = Instant::now();
         let pixels = match settings.mode {
@@ -226,7 +236,7 @@ fn render(scene: &HostScene, settings: &Settings, display: &mut SimulatorDisplay
             }
         };
         let trace = started.elapsed();
-        Ok(Finished { rendered: Rendered { viewport, palette, pixels, statistics, preprocess, trace }, extents })
+        Ok(Finished { rendered: Rendered { viewport, palette, pixels, statistics, preprocess, trace }, extents, grid })
     })
 }
 
@@ -245,6 +255,7 @@ fn draw_finished(
     let pixels = rendered.to_rgb().into_iter().enumerate().map(|(i, [r, g, b])| Pixel(Point::new((i % width) as i32, (i / width) as i32), EgRgb888::new(r, g, b)));
     let _ = display.draw_iter(pixels);
     if settings.overlay {
+        ui::overlay::draw_grid(&finished.grid, display);
         ui::overlay::draw(&finished.extents, display);
     }
     ui::oled::draw(oled, display, panel + Point::new(1, 1));

@@ -1,5 +1,6 @@
 //! The overlay of what the optimizations see (thesis figures 4.14, 4.15): each object's screen
-//! extent as the core's Extents optimization computed it (`Scene::acceleration`).
+//! extent as the core's Extents optimization computed it, and the Grid's cells
+//! (`Scene::acceleration`).
 
 use embedded_graphics::pixelcolor::Rgb888;
 use embedded_graphics::prelude::*;
@@ -31,4 +32,22 @@ pub fn draw(extents: &[ScreenExtent], target: &mut SimulatorDisplay<Rgb888>) {
         let size = Size::new(u32::from(extent.columns.1 - extent.columns.0) + 1, u32::from(extent.rows.1 - extent.rows.0) + 1);
         let _ = Rectangle::new(top_left, size).into_styled(PrimitiveStyle::with_stroke(COLOURS[index % COLOURS.len()], 1)).draw(target);
     }
+}
+
+/// The Grid's cell boundaries in image pixels.
+#[derive(Clone, Debug, Default)]
+pub struct GridLines {
+    pub columns: Vec<u16>,
+    pub rows: Vec<u16>,
+    pub width: u16,
+    pub height: u16,
+}
+
+/// Draws the cell boundaries as dotted grey lines.
+pub fn draw_grid(grid: &GridLines, target: &mut SimulatorDisplay<Rgb888>) {
+    let colour = Rgb888::new(160, 160, 160);
+    let vertical = grid.columns.iter().flat_map(|&x| (0..grid.height).step_by(2).map(move |y| (x, y)));
+    let horizontal = grid.rows.iter().flat_map(|&y| (0..grid.width).step_by(2).map(move |x| (x, y)));
+    let pixels = vertical.chain(horizontal).map(|(x, y)| Pixel(Point::new(i32::from(x), i32::from(y)), colour));
+    let _ = target.draw_iter(pixels);
 }
