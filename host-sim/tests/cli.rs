@@ -1,0 +1,130 @@
+//! The `microtrace` command as a user runs it: outputs, errors, and no partial files.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn microtrace(arguments: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_microtrace"))
+        .args(arguments)
+        .current_dir(Path::new(env!("CARGO_MANIFEST_DIR")).join(".."))
+        .output()
+        .expect("the microtrace binary runs")
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let directory = std::env::temp_dir().join(format!("microtrace-cli-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&directory);
+    std::fs::create_dir_all(&directory).unwrap();
+    directory
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+#[test]
+fn renders_a_thesis_scene_to_png_and_every_file_format_round_trips() {
+    let directory = scratch("formats");
+    let path = |name: &str| directory.join(name).to_str().unwrap().to_owned();
+    let output = microtrace(&[
+        "render", "scenes/snooker.mts", "--size", "66x60", "--out", &path("image.png"), "--pga", &path("image.pga"),
+        "--lut", &path("image.lut"), "--stats",
+    ]);
+    assert!(output.status.success(), "{}", text(&output.stderr));
+    let stderr = text(&output.stderr);
+    assert!(stderr.contains("pixels            3960"), "{stderr}");
+    let uncompressed =
+        microtrace(&["render", "scenes/snooker.mts", "--size", "66x60", "--pga", &path("image.ff"), "--uncompressed"]);
+    assert!(uncompressed.status.success(), "{}", text(&uncompressed.stderr));
+    let ff = std::fs::read(path("image.ff")).unwrap();
+    assert_eq!(&ff[..9], &[0xFF, 0, 0, 65, 0, 0, 0, 59, 0]);
+    assert_eq!(ff.len(), 9 + 66 * 60);
+    assert_eq!(std::fs::read(path("image.pga")).unwrap()[0], 0xD9);
+
+    let png = microtrace_sim::files::read_png_rgb(Path::new(&path("image.png"))).unwrap();
+    for file in ["image.pga", "image.ff"] {
+        let decoded = microtrace(&["decode", &path(file), "--lut", &path("image.lut"), "--out", &path("decoded.png")]);
+        assert!(decoded.status.success(), "{}", text(&decoded.stderr));
+        assert_eq!(microtrace_sim::files::read_png_rgb(Path::new(&path("decoded.png"))).unwrap(), png, "{file}");
+    }
+
+    let rgb = microtrace(&[
+        "render", "scenes/snooker.mts", "--size", "66x60", "--mode", "rgb", "--out", &path("rgb.png"), "--rgb", &path("image.rgb"),
+    ]);
+    assert!(rgb.status.success(), "{}", text(&rgb.stderr));
+    let decoded = microtrace(&["decode", &path("image.rgb"), "--out", &path("decoded-rgb.png")]);
+    assert!(decoded.status.success(), "{}", text(&decoded.stderr));
+    assert_eq!(
+        microtrace_sim::files::read_png_rgb(Path::new(&path("decoded-rgb.png"))).unwrap(),
+        microtrace_sim::files::read_png_rgb(Path::new(&path("rgb.png"))).unwrap()
+    );
+}
+
+#[test]
+fn stats_json_has_exactly_the_table_keys() {
+    let directory = scratch("json");
+    let json_path = directory.join("stats.json");
+    let output = microtrace(&["render", "scenes/lattice.mts", "--size", "47x48", "--stats-json", json_path.to_str().unwrap()]);
+    assert!(output.status.success(), "{}", text(&output.stderr));
+    let json = std::fs::read_to_string(&json_path).unwrap();
+    let keys: Vec<&str> = json.split('"').skip(1).step_by(2).collect();
+    assert_eq!(
+        keys,
+        ["pixels", "rays_traced", "rays_intersected", "ro_tests", "ro_hits", "shadow_rays", "shadow_tests", "preprocess_ms", "trace_ms"]
+    );
+    assert!(json.contains("\"pixels\": 2256,"), "{json}");
+}
+
+#[test]
+fn a_scene_error_names_file_and_line_and_writes_nothing() {
+    let directory = scratch("error");
+    let scene = directory.join("broken.mts");
+    std::fs::write(&scene, "viewport 0 9 0 9\nsphere\n  scale 1 0 1\n").unwrap();
+    let image = directory.join("image.png");
+    let output = microtrace(&["render", scene.to_str().unwrap(), "--out", image.to_str().unwrap()]);
+    assert_eq!(output.status.code(), Some(1));
+    let stderr = text(&output.stderr);
+    assert!(stderr.contains("broken.mts:") && stderr.contains("line 3"), "{stderr}");
+    assert!(!image.exists());
+    assert_eq!(std::fs::read_dir(&directory).unwrap().count(), 1, "only the scene is left");
+}
+
+#[test]
+fn missing_scene_and_bad_arguments_are_clear_errors() {
+    let output = microtrace(&["render", "no-such-scene.mts", "--out", "x.png"]);
+    assert_eq!(output.status.code(), Some(1));
+    assert!(text(&output.stderr).contains("cannot read scene no-such-scene.mts"), "{}", text(&output.stderr));
+
+    let output = microtrace(&["render", "scenes/snooker.mts", "--size", "0x10", "--out", "x.png"]);
+    assert!(!output.status.success());
+    assert!(text(&output.stderr).contains("1 to 8192"), "{}", text(&output.stderr));
+
+    let output = microtrace(&["render", "scenes/snooker.mts", "--rgb", "x.rgb"]);
+    assert_eq!(output.status.code(), Some(1));
+    assert!(text(&output.stderr).contains("--mode rgb"), "{}", text(&output.stderr));
+
+    let output = microtrace(&["render", "scenes/snooker.mts"]);
+    assert_eq!(output.status.code(), Some(1));
+    assert!(text(&output.stderr).contains("nothing to write"), "{}", text(&output.stderr));
+}
+
+#[test]
+fn an_unwritable_output_leaves_no_file_behind() {
+    let directory = scratch("unwritable");
+    let image = directory.join("no-such-directory").join("image.png");
+    let output = microtrace(&["render", "scenes/snooker.mts", "--size", "20x20", "--out", image.to_str().unwrap()]);
+    assert_eq!(output.status.code(), Some(1));
+    assert!(text(&output.stderr).contains("cannot write"), "{}", text(&output.stderr));
+    assert_eq!(std::fs::read_dir(&directory).unwrap().count(), 0);
+}
+
+#[test]
+fn decode_rejects_a_file_that_is_not_an_image() {
+    let directory = scratch("decode");
+    let bogus = directory.join("bogus.pga");
+    std::fs::write(&bogus, b"\x42not an image").unwrap();
+    let output = microtrace(&["decode", bogus.to_str().unwrap(), "--out", directory.join("out.png").to_str().unwrap()]);
+    assert_eq!(output.status.code(), Some(1));
+    assert!(text(&output.stderr).contains("cannot decode"), "{}", text(&output.stderr));
+    assert!(!directory.join("out.png").exists());
+}
