@@ -9,15 +9,28 @@ pub enum NumberType {
     F64,
     /// IEEE single precision.
     F32,
+    /// Q32.32 fixed point (64-bit integers): the recommended type for FPU-less targets.
+    Fixed,
+    /// Q16.16 fixed point (32-bit integers): cheaper, less accurate.
+    Fixed16,
+    /// f32 with micromath's fast approximate square root.
+    #[value(name = "f32-micromath")]
+    F32Micromath,
 }
 
 impl NumberType {
-    pub const ALL: &'static [NumberType] = &[NumberType::F64, NumberType::F32];
+    pub const ALL: &'static [NumberType] =
+        &[NumberType::F64, NumberType::F32, NumberType::Fixed, NumberType::Fixed16, NumberType::F32Micromath];
 
+    /// The command-line name, which is also the core type's `Number::NAME`.
     pub fn name(self) -> &'static str {
+        use microtrace::number::{Fixed, Fixed16, F32Micro, Number};
         match self {
-            NumberType::F64 => "f64",
-            NumberType::F32 => "f32",
+            NumberType::F64 => <f64 as Number>::NAME,
+            NumberType::F32 => <f32 as Number>::NAME,
+            NumberType::Fixed => Fixed::NAME,
+            NumberType::Fixed16 => Fixed16::NAME,
+            NumberType::F32Micromath => F32Micro::NAME,
         }
     }
 }
@@ -35,6 +48,35 @@ macro_rules! with_number_type {
                 type $number = f32;
                 $body
             }
+            $crate::number_type::NumberType::Fixed => {
+                type $number = microtrace::number::Fixed;
+                $body
+            }
+            $crate::number_type::NumberType::Fixed16 => {
+                type $number = microtrace::number::Fixed16;
+                $body
+            }
+            $crate::number_type::NumberType::F32Micromath => {
+                type $number = microtrace::number::F32Micro;
+                $body
+            }
         }
     };
+}
+
+#[cfg(test)]
+mod tests {
+    use super::NumberType;
+    use clap::ValueEnum;
+
+    #[test]
+    fn command_line_names_are_the_core_type_names() {
+        for number in NumberType::ALL {
+            let value = number.to_possible_value().expect("every type is offered");
+            assert_eq!(value.get_name(), number.name());
+        }
+        let names: Vec<&str> = NumberType::ALL.iter().map(|n| n.name()).collect();
+        assert_eq!(names, ["f64", "f32", "fixed", "fixed16", "f32-micromath"]);
+        assert_eq!(NumberType::value_variants().len(), NumberType::ALL.len());
+    }
 }
