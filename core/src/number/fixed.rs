@@ -261,6 +261,7 @@ impl Neg for Fixed {
 
 impl Number for Fixed {
     const NAME: &'static str = "fixed";
+    const SCENE_LIMIT: f64 = Self::COORDINATE_LIMIT;
     const ZERO: Self = Self::from_bits(0);
     const ONE: Self = Self::from_bits(1 << 32);
     const MAX: Self = Self::from_bits(i64::MAX);
@@ -321,9 +322,6 @@ impl Number for Fixed {
         Self::from_bits(length.checked_shl(shift).filter(|l| l >> shift == length).unwrap_or(i64::MAX))
     }
 
-    fn can_represent(value: f64) -> bool {
-        value.is_finite() && value.abs() <= Self::COORDINATE_LIMIT
-    }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -411,6 +409,7 @@ impl Neg for Fixed16 {
 
 impl Number for Fixed16 {
     const NAME: &'static str = "fixed16";
+    const SCENE_LIMIT: f64 = Self::COORDINATE_LIMIT;
     const ZERO: Self = Self::from_bits(0);
     const ONE: Self = Self::from_bits(1 << 16);
     const MAX: Self = Self::from_bits(i32::MAX);
@@ -475,7 +474,4 @@ impl Number for Fixed16 {
         Self::from_bits(sum.isqrt().min(i32::MAX as u64) as i32)
     }
 
-    fn can_represent(value: f64) -> bool {
-        value.is_finite() && value.abs() <= Self::COORDINATE_LIMIT
-    }
 }

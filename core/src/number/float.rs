@@ -4,9 +4,10 @@
 use super::Number;
 
 macro_rules! float_number {
-    ($type:ty, $name:literal, $sqrt:path, $floor:path) => {
+    ($type:ty, $name:literal, $limit:expr, $sqrt:path, $floor:path) => {
         impl Number for $type {
             const NAME: &'static str = $name;
+            const SCENE_LIMIT: f64 = $limit;
             const ZERO: Self = 0.0;
             const ONE: Self = 1.0;
             const MAX: Self = <$type>::MAX;
@@ -51,8 +52,9 @@ macro_rules! float_number {
     };
 }
 
-float_number!(f64, "f64", libm::sqrt, libm::floor);
-float_number!(f32, "f32", libm::sqrtf, libm::floorf);
+float_number!(f64, "f64", f64::INFINITY, libm::sqrt, libm::floor);
+// Three squares of 10¹⁸ (3·10³⁶) stay below f32::MAX (3.4·10³⁸): no infinities from dot products.
+float_number!(f32, "f32", 1e18, libm::sqrtf, libm::floorf);
 
 #[cfg(test)]
 mod tests {

@@ -63,6 +63,7 @@ impl Neg for F32Micro {
 
 impl Number for F32Micro {
     const NAME: &'static str = "f32-micromath";
+    const SCENE_LIMIT: f64 = <f32 as Number>::SCENE_LIMIT;
     const ZERO: Self = Self(0.0);
     const ONE: Self = Self(1.0);
     const MAX: Self = Self(f32::MAX);

@@ -106,14 +106,16 @@ pub trait Number:
         Self::dot3(v, v).sqrt()
     }
 
+    /// The documented range of scene values: the largest magnitude [`Number::can_represent`]
+    /// accepts. Infinite for `f64`.
+    const SCENE_LIMIT: f64 = f64::INFINITY;
+
     /// Whether a scene value (a coordinate, a light position, a matrix entry) of this size is
     /// safe in this type: it converts without saturating, and the squares and dot products the
-    /// tracer forms from such values stay in range. Scene preparation can use it to reject a
+    /// tracer forms from such values stay in range. Scene preparation uses it to reject a
     /// scene that does not fit and name the object. Values too small to resolve are accepted
     /// (they round to zero or lose relative precision, which the caller cannot act on).
-    ///
-    /// The default accepts every finite value, which is right for the float types.
     fn can_represent(value: f64) -> bool {
-        value.is_finite()
+        value.is_finite() && value.abs() <= Self::SCENE_LIMIT
     }
 }

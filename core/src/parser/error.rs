@@ -107,9 +107,11 @@ pub enum SceneErrorKind {
     SingularTransform,
     /// The scene uses a primitive that this build leaves out (scene preparation).
     PrimitiveNotCompiled { primitive: &'static str },
-    /// A value of the object starting on `object_line` does not fit the number type the scene
-    /// is prepared in (scene preparation).
-    OutOfRangeForNumberType { object_line: u32, what: &'static str },
+    /// A scene value does not fit the number type the scene is prepared in (scene
+    /// preparation): `what` reached `value` in magnitude, beyond `limit`, the documented range
+    /// of the type called `number`. The error's line is the object's first line, or 0 for the
+    /// camera and the light.
+    OutOfRangeForNumberType { what: &'static str, number: &'static str, value: f64, limit: f64 },
 }
 
 impl fmt::Display for SceneErrorKind {
@@ -160,11 +162,23 @@ impl fmt::Display for SceneErrorKind {
             }
             Self::SingularTransform => f.write_str("singular transform: the object's transform cannot be inverted"),
             Self::PrimitiveNotCompiled { primitive } => write!(f, "{primitive} is not compiled into this build"),
-            Self::OutOfRangeForNumberType { object_line, what } => write!(
-                f,
-                "object starting on line {object_line}: {what} cannot be represented in this number type"
-            ),
+            Self::OutOfRangeForNumberType { what, number, value, limit } => {
+                write!(f, "{what} reaches ")?;
+                write_magnitude(f, *value)?;
+                write!(f, ", too large for the number type `{number}`, whose documented range for scene values is ±")?;
+                write_magnitude(f, *limit)?;
+                f.write_str(" (see docs/hard-cases.md)")
+            }
         }
+    }
+}
+
+/// A magnitude as plain digits up to a billion, in exponent form above (or when not finite).
+fn write_magnitude(f: &mut fmt::Formatter<'_>, value: f64) -> fmt::Result {
+    if value.abs() < 1e9 {
+        write!(f, "{value}")
+    } else {
+        write!(f, "{value:e}")
     }
 }
 

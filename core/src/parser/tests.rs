@@ -543,11 +543,15 @@ fn long_tokens_are_truncated_in_messages() {
 fn preparation_kinds_display() {
     let e = SceneError { line: 7, kind: SceneErrorKind::PrimitiveNotCompiled { primitive: "cone" } };
     assert_eq!(e.to_string(), "line 7: cone is not compiled into this build");
-    let e = SceneError { line: 0, kind: SceneErrorKind::OutOfRangeForNumberType { object_line: 12, what: "the translation" } };
+    let kind = SceneErrorKind::OutOfRangeForNumberType { what: "the object's bounding volume", number: "fixed", value: 30000.5, limit: 26000.0 };
+    let e = SceneError { line: 12, kind };
     assert_eq!(
         e.to_string(),
-        "line 0: object starting on line 12: the translation cannot be represented in this number type"
+        "line 12: the object's bounding volume reaches 30000.5, too large for the number type `fixed`, whose \
+         documented range for scene values is ±26000 (see docs/hard-cases.md)"
     );
+    let kind = SceneErrorKind::OutOfRangeForNumberType { what: "the light", number: "f32", value: 2e20, limit: 1e18 };
+    assert!(SceneError { line: 0, kind }.to_string().contains("reaches 2e20, too large for the number type `f32`"));
 }
 
 #[test]

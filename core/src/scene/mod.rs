@@ -3,6 +3,7 @@
 
 mod description;
 mod prepared;
+mod range;
 
 pub use description::*;
 pub use prepared::*;

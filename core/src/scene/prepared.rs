@@ -12,6 +12,7 @@ use crate::geometry::{AffineTransform, Vector3};
 use crate::number::Number;
 use crate::optimize::Acceleration;
 use crate::parser::{SceneError, SceneErrorKind};
+use crate::scene::range::{self, RayOrigins};
 use crate::scene::{Light, ObjectDescription, Optimizations, Primitive, SceneDescription, Viewport};
 use crate::shading::{Palette, ShadingConstants};
 
@@ -72,6 +73,8 @@ impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
         description: &SceneDescription<CAPACITY>,
         descriptions: &[ObjectDescription],
     ) -> Result<Self, SceneError> {
+        range::check_camera_and_light::<N, CAPACITY>(description)?;
+        let origins = RayOrigins::of(description, descriptions);
         let mut objects = Vec::new();
         for object in descriptions {
             let error = |kind| SceneError { line: object.line, kind };
@@ -79,6 +82,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
                 return Err(error(SceneErrorKind::PrimitiveNotCompiled { primitive: object.primitive.name() }));
             }
             let inverse = object.world_from_object.affine_inverse().ok_or(error(SceneErrorKind::SingularTransform))?;
+            range::check_object::<N>(object, &inverse, &origins)?;
             let material = &object.material;
             let prepared = Object {
                 primitive: object.primitive,
