@@ -235,7 +235,7 @@ impl ObjectGeometry {
 
 /// An upper bound of the largest singular value of `m`: the square root of the largest
 /// Gershgorin row sum of `m·mᵀ` (exact for a rotation times a uniform scale).
-fn largest_semi_axis(m: &[[f64; 3]; 3]) -> f64 {
+pub(crate) fn largest_semi_axis(m: &[[f64; 3]; 3]) -> f64 {
     let gram = |i: usize, j: usize| dot(m[i], m[j]);
     let row_sum = |i: usize| (0..3).map(|j| gram(i, j).abs()).sum::<f64>();
     libm::sqrt(row_sum(0).max(row_sum(1)).max(row_sum(2))) * (1.0 + 1e-12)

@@ -266,8 +266,9 @@ fn rendered_geometry<N: Number>(description: &ObjectDescription) -> Option<Objec
     ObjectGeometry::new(description.primitive, &AffineTransform::<N>::from_matrix(&inverse))
 }
 
-/// The view-plane window's corners in world space (the parallel rays' extreme origins).
-fn window_corners<N: Number>(screen: &Screen, camera: &Camera<N>) -> [[f64; 3]; 4] {
+/// The view-plane window's corners in world space (the parallel rays' extreme origins), as
+/// Sortlist's [`sortlist::depth_bound`] takes them.
+pub fn window_corners<N: Number>(screen: &Screen, camera: &Camera<N>) -> [[f64; 3]; 4] {
     let (w, h) = (screen.width - 1, screen.height - 1);
     [(0, 0), (w, 0), (0, h), (w, h)].map(|(c, r)| camera.view_plane_point(camera.pixel(c, r)).to_f64())
 }

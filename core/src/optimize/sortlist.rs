@@ -15,7 +15,7 @@
 //! when the bound is strictly greater than the nearest `t`: an equal `t` may still win the tie
 //! for a lower object number.
 
-use super::bounding_volume::{dot, ObjectGeometry};
+use super::bounding_volume::{dot, largest_semi_axis, ObjectGeometry};
 use super::projection::{Screen, View};
 
 /// The lower bound of `t` for one object (already lowered by the rounding margin); `None` when
@@ -34,6 +34,38 @@ pub fn depth_bound(screen: &Screen, corners: &[[f64; 3]; 4], geometry: &ObjectGe
         View::Perspective { eye } => geometry.distance_lower_bound(eye),
     };
     bound.is_finite().then(|| bound - 1e-3 * (bound.abs() + 1.0))
+}
+
+/// An upper bound of `t` over the object's bounding volume: the far end of the depth range
+/// whose near end is [`depth_bound`], for display only (the thesis's `zfar`, which it computed
+/// and never used; the renderer does not use this either). Parallel: the largest value of the
+/// same linear function (exact over a sphere's ellipsoid); perspective: the largest distance
+/// from the eye (over the ellipsoid for a sphere, the volume's vertices otherwise). `None` for
+/// parallel rays along the view plane.
+pub fn far_depth_bound(screen: &Screen, geometry: &ObjectGeometry) -> Option<f64> {
+    let bound = match screen.view {
+        View::Parallel { direction: d } => {
+            if d[2].abs() <= 1e-6 {
+                return None;
+            }
+            -geometry.min_linear([0.0, 0.0, -1.0 / d[2]]) - screen.view_plane / d[2]
+        }
+        View::Perspective { eye } => match geometry.ellipsoid() {
+            Some((centre, m)) => {
+                let offset = [0, 1, 2].map(|k| centre[k] - eye[k]);
+                libm::sqrt(dot(offset, offset)) + largest_semi_axis(&m)
+            }
+            None => geometry
+                .volume()
+                .iter()
+                .map(|p| {
+                    let offset = [0, 1, 2].map(|k| p[k] - eye[k]);
+                    libm::sqrt(dot(offset, offset))
+                })
+                .fold(0.0, f64::max),
+        },
+    };
+    bound.is_finite().then_some(bound)
 }
 
 /// Sorts `order` (object numbers) by `bound`, ties by object number (insertion sort: stable,

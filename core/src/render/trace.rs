@@ -151,8 +151,9 @@ fn render<N, P, S, const MAX_OBJECTS: usize>(
 }
 
 /// Pixelbuffer's preprocess (`initpga` and `rendervolume`): flood the viewport, then fill
-/// every object's projected bounding volume, row span by row span.
-fn fill_volumes<N, P, S, const MAX_OBJECTS: usize>(scene: &Scene<N, MAX_OBJECTS>, sink: &mut S, fill: P, flood: P)
+/// every object's projected bounding volume, row span by row span. Public so a viewer can
+/// record which pixels the fill marks (into a sink of its own, with its own two values).
+pub fn fill_volumes<N, P, S, const MAX_OBJECTS: usize>(scene: &Scene<N, MAX_OBJECTS>, sink: &mut S, fill: P, flood: P)
 where
     N: Number,
     P: Copy,

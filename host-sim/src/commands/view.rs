@@ -2,14 +2,20 @@
 //!
 //! The image is traced by the same core through the same `PixelSink`/`PixelSource` path as the
 //! firmware and appears row by row from the top; the panel shows the settings, the statistics
-//! and the render time, the key help, and a preview of the firmware's 128x64 grey OLED.
+//! and the render time, the key help, and a preview of the firmware's 128x64 grey OLED. The
+//! overlay draws what the optimizations see: extents and grid cells on the image, and beside
+//! the panel a plan view of the bounding volumes with Sortlist's depth ranges.
 
 use std::path::PathBuf;
 use std::time::Instant;
 
 use anyhow::Context;
 use embedded_graphics::pixelcolor::Rgb888 as EgRgb888;
+use embedded_graphics::mono_font::ascii::FONT_6X10;
+use embedded_graphics::mono_font::MonoTextStyle;
 use embedded_graphics::prelude::*;
+use embedded_graphics::primitives::Rectangle;
+use embedded_graphics::text::{Baseline, Text};
 use embedded_graphics_simulator::{OutputSettings, OutputSettingsBuilder, SimulatorDisplay, SimulatorEvent};
 use microtrace::pixel::FrameBuffer;
 use microtrace::render::{render_pga, render_rgb, Statistics};
@@ -26,7 +32,9 @@ use crate::with_number_type;
 pub mod ui;
 
 use ui::keys::{self, Action};
+use ui::fill::PixelbufferFill;
 use ui::overlay::ScreenExtent;
+use ui::plan::PlanView;
 use ui::window::View;
 
 #[derive(clap::Args, Clone, Debug)]
@@ -54,9 +62,12 @@ pub struct ViewArgs {
     /// Show each window pixel as N x N screen pixels (for small scenes).
     #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=16))]
     pub scale: u32,
-    /// Start with the optimization overlay on (O toggles it).
+    /// Start with the optimization overlay on: extents, grid and plan view (O toggles it).
     #[arg(long)]
     pub overlay: bool,
+    /// Start with the pixels the Pixelbuffer's fill marks tinted (F toggles it).
+    #[arg(long)]
+    pub fill: bool,
     /// Render fully, save the finished window (image, overlay, panel) to FILE.png and exit.
     #[arg(long, value_name = "FILE.png")]
     pub screenshot: Option<PathBuf>,
@@ -70,6 +81,7 @@ struct Settings {
     number: NumberType,
     mode: Mode,
     overlay: bool,
+    fill: bool,
 }
 
 /// One finished render: the image, its statistics and what the overlay draws.
@@ -77,6 +89,8 @@ struct Finished {
     rendered: Rendered,
     extents: Vec<ScreenExtent>,
     grid: ui::overlay::GridLines,
+    plan: PlanView,
+    fill: PixelbufferFill,
 }
 
 /// Where the Grid's cells start (from `Acceleration::grid_cell`); empty without the Grid.
@@ -103,12 +117,14 @@ pub fn run(args: ViewArgs) -> anyhow::Result<()> {
     }
     let (width, height) = (u32::from(scene.viewport.width()), u32::from(scene.viewport.height()));
     let panel_x = width + 8;
-    let window_size = Size::new(panel_x + ui::panel::WIDTH, height.max(ui::oled::HEIGHT as u32 * ui::oled::ZOOM + 12 + ui::panel::height(14)));
+    let panel_height = ui::oled::HEIGHT as u32 * ui::oled::ZOOM + 12 + ui::panel::height(PANEL_LINES);
+    let plan_height = PLAN_TOP + ui::plan::HEIGHT + 8 + ui::depth_ranges::height(scene.objects.len()) + 4;
+    let window_size = Size::new(panel_x + ui::panel::WIDTH + ui::plan::WIDTH + 8, height.max(panel_height).max(plan_height));
     let mut display = SimulatorDisplay::<EgRgb888>::new(window_size);
     let output = OutputSettingsBuilder::new().scale(args.scale).build();
     let title = format!("MicroTrace — {}", args.scene.display());
     let mut view = View::open(&title, &output, &display)?;
-    let mut settings = Settings { number: args.number, mode: args.mode, overlay: args.overlay };
+    let mut settings = Settings { number: args.number, mode: args.mode, overlay: args.overlay, fill: args.fill };
 
     loop {
         let finished = render(&scene, &settings, &mut display, &mut view)?;
@@ -159,8 +175,12 @@ pub fn run(args: ViewArgs) -> anyhow::Result<()> {
                     Action::SwitchMode => settings.mode = if settings.mode == Mode::Pga { Mode::Rgb } else { Mode::Pga },
                     Action::ToggleDither => scene.dither = !scene.dither,
                     Action::ToggleShadows => scene.shadows = !scene.shadows,
-                    Action::ToggleOverlay => {
-                        settings.overlay = !settings.overlay;
+                    Action::ToggleOverlay | Action::ToggleFill => {
+                        if action == Action::ToggleOverlay {
+                            settings.overlay = !settings.overlay;
+                        } else {
+                            settings.fill = !settings.fill;
+                        }
                         draw_finished(&scene, &settings, &finished, &oled, &mut display, Point::new(panel_x as i32, 4));
                         continue;
                     }
@@ -213,10 +233,12 @@ fn render(scene: &HostScene, settings: &Settings, display: &mut SimulatorDisplay
         let prepared = Box::new(Scene::<N, HOST_MAX_OBJECTS>::prepare(scene).map_err(|error| anyhow::anyhow!("{error}"))?);
         let preprocess = started.elapsed();
         let extents = (0..scene.objects.len())
-            .filter_map(|i| prepared.acceleration.extent(i))
-            .map(|e| ScreenExtent { columns: (e.first_column, e.last_column), rows: (e.first_row, e.last_row) })
+            .filter_map(|object| prepared.acceleration.extent(object).map(|e| (object, e)))
+            .map(|(object, e)| ScreenExtent { object, columns: (e.first_column, e.last_column), rows: (e.first_row, e.last_row) })
             .collect();
         let grid = grid_lines(&prepared.acceleration, width, height);
+        let plan = PlanView::of(&*prepared);
+        let fill = PixelbufferFill::record(&*prepared);
         let mut statistics = Statistics::default();
         let started = Instant::now();
         let pixels = match settings.mode {
@@ -236,7 +258,7 @@ fn render(scene: &HostScene, settings: &Settings, display: &mut SimulatorDisplay
             }
         };
         let trace = started.elapsed();
-        Ok(Finished { rendered: Rendered { viewport, palette, pixels, statistics, preprocess, trace }, extents, grid })
+        Ok(Finished { rendered: Rendered { viewport, palette, pixels, statistics, preprocess, trace }, extents, grid, plan, fill })
     })
 }
 
@@ -254,9 +276,20 @@ fn draw_finished(
     let width = usize::from(rendered.width());
     let pixels = rendered.to_rgb().into_iter().enumerate().map(|(i, [r, g, b])| Pixel(Point::new((i % width) as i32, (i / width) as i32), EgRgb888::new(r, g, b)));
     let _ = display.draw_iter(pixels);
+    if settings.fill {
+        finished.fill.draw_tint(display);
+    }
     if settings.overlay {
         ui::overlay::draw_grid(&finished.grid, display);
         ui::overlay::draw(&finished.extents, display);
+        // The plan view and the depth ranges, right of the panel.
+        let left = panel.x + ui::panel::WIDTH as i32;
+        let text = MonoTextStyle::new(&FONT_6X10, EgRgb888::new(230, 230, 230));
+        let _ = Text::with_baseline("plan x-z from above: volumes", Point::new(left, panel.y), text, Baseline::Top).draw(display);
+        let area = Rectangle::new(Point::new(left, PLAN_TOP as i32), Size::new(ui::plan::WIDTH, ui::plan::HEIGHT));
+        ui::plan::draw(&finished.plan, display, area);
+        let below = Point::new(left, (PLAN_TOP + ui::plan::HEIGHT + 8) as i32);
+        ui::depth_ranges::draw(&finished.plan, display, below, ui::plan::WIDTH);
     }
     ui::oled::draw(oled, display, panel + Point::new(1, 1));
     let s = &rendered.statistics;
@@ -264,7 +297,8 @@ fn draw_finished(
         format!("OLED 128x64 preview (above)"),
         format!("{}x{} {} {}", rendered.width(), rendered.height(), settings.number.name(), mode_name(settings.mode)),
         format!("opt {}", optimization_names(scene.optimizations)),
-        format!("shadows {}  dither {}  overlay {}", on(scene.shadows), on(scene.dither), on(settings.overlay)),
+        format!("shadows {}  dither {}", on(scene.shadows), on(scene.dither)),
+        format!("overlay {}  fill {} ({} px)", on(settings.overlay), on(settings.fill), finished.fill.count()),
         format!("preprocess {:.1} ms", rendered.preprocess.as_secs_f64() * 1e3),
         format!("trace      {:.1} ms", rendered.trace.as_secs_f64() * 1e3),
         format!("pixels {}  traced {}", s.pixels, s.rays_traced),
@@ -275,6 +309,11 @@ fn draw_finished(
     let y = panel.y + (ui::oled::HEIGHT as u32 * ui::oled::ZOOM) as i32 + 8;
     ui::panel::draw(&lines, display, Point::new(panel.x, y));
 }
+
+/// Lines of text in the panel above the key help.
+const PANEL_LINES: usize = 11;
+/// Top of the plan view's drawing area (below its title).
+const PLAN_TOP: u32 = 4 + 12;
 
 fn on(value: bool) -> &'static str {
     if value { "on" } else { "off" }

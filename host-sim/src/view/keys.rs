@@ -13,6 +13,7 @@ pub enum Action {
     ToggleDither,
     ToggleShadows,
     ToggleOverlay,
+    ToggleFill,
     SavePng,
     Quit,
 }
@@ -24,7 +25,8 @@ pub const HELP: &[(&str, &str)] = &[
     ("M", "PGA / RGB mode"),
     ("D", "dither on/off"),
     ("S", "shadows on/off"),
-    ("O", "overlay on/off"),
+    ("O", "overlay: extents, grid, plan"),
+    ("F", "show Pixelbuffer fill"),
     ("P", "save PNG"),
     ("Q/Esc", "quit"),
 ];
@@ -40,6 +42,7 @@ pub fn action(key: Keycode) -> Option<Action> {
         Keycode::D => Action::ToggleDither,
         Keycode::S => Action::ToggleShadows,
         Keycode::O => Action::ToggleOverlay,
+        Keycode::F => Action::ToggleFill,
         Keycode::P => Action::SavePng,
         Keycode::Q | Keycode::Escape => Action::Quit,
         _ => return None,

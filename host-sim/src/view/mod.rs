@@ -1,8 +1,12 @@
 //! The simulator window of `microtrace view`: one concept per file.
 
+pub mod colours;
+pub mod depth_ranges;
+pub mod fill;
 pub mod keys;
 pub mod oled;
 pub mod overlay;
 pub mod panel;
+pub mod plan;
 pub mod sink;
 pub mod window;

@@ -1,36 +1,32 @@
-//! The overlay of what the optimizations see (thesis figures 4.14, 4.15): each object's screen
-//! extent as the core's Extents optimization computed it, and the Grid's cells
-//! (`Scene::acceleration`).
+//! The overlay on the image of what the optimizations see (thesis figures 4.14a, 4.15a): each
+//! object's screen extent as the core's Extents optimization computed it, and the Grid's cells
+//! (`Scene::acceleration`). The plan view and the depth ranges are drawn beside it ([`super::plan`],
+//! [`super::depth_ranges`]).
 
 use embedded_graphics::pixelcolor::Rgb888;
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::{PrimitiveStyle, Rectangle};
 use embedded_graphics_simulator::SimulatorDisplay;
 
+use super::colours::object_colour;
+
 /// One object's screen extent: first and last column, first and last row.
 #[derive(Clone, Copy, Debug)]
 pub struct ScreenExtent {
+    /// The object's number in the scene (from 0), for its colour.
+    pub object: usize,
     pub columns: (u16, u16),
     pub rows: (u16, u16),
 }
 
-const COLOURS: [Rgb888; 6] = [
-    Rgb888::new(255, 255, 0),
-    Rgb888::new(0, 255, 255),
-    Rgb888::new(255, 0, 255),
-    Rgb888::new(0, 255, 0),
-    Rgb888::new(255, 128, 0),
-    Rgb888::new(128, 160, 255),
-];
-
 pub fn draw(extents: &[ScreenExtent], target: &mut SimulatorDisplay<Rgb888>) {
-    for (index, extent) in extents.iter().enumerate() {
+    for extent in extents {
         if extent.columns.0 > extent.columns.1 || extent.rows.0 > extent.rows.1 {
             continue;
         }
         let top_left = Point::new(i32::from(extent.columns.0), i32::from(extent.rows.0));
         let size = Size::new(u32::from(extent.columns.1 - extent.columns.0) + 1, u32::from(extent.rows.1 - extent.rows.0) + 1);
-        let _ = Rectangle::new(top_left, size).into_styled(PrimitiveStyle::with_stroke(COLOURS[index % COLOURS.len()], 1)).draw(target);
+        let _ = Rectangle::new(top_left, size).into_styled(PrimitiveStyle::with_stroke(object_colour(extent.object), 1)).draw(target);
     }
 }
 
