@@ -3,6 +3,7 @@
 
 pub mod commands;
 pub mod files;
+pub mod image_difference;
 pub mod number_type;
 pub mod progress;
 pub mod rendering;

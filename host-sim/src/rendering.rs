@@ -65,9 +65,10 @@ pub fn render_scene(scene: &HostScene, number: NumberType, mode: Mode, progress:
     if pixel_count > 64 << 20 {
         bail!("the viewport is {width}x{height}: too large to render in memory");
     }
+    // The scene error stays typed (not just its text) so callers can tell "out of range" apart.
     with_number_type!(number, N => {
         let started = Instant::now();
-        let prepared = Box::new(Scene::<N, HOST_MAX_OBJECTS>::prepare(scene).map_err(|error| anyhow::anyhow!("{error}"))?);
+        let prepared = Box::new(Scene::<N, HOST_MAX_OBJECTS>::prepare(scene).map_err(anyhow::Error::new)?);
         let preprocess = started.elapsed();
         let mut statistics = Statistics::default();
         let label = progress.unwrap_or("");

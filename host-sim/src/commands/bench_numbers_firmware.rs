@@ -1,0 +1,82 @@
+//! Instructions per pixel on the Cortex-M boards, read from `docs/firmware-report.json`
+//! (written by `cargo xtask firmware-report`: 128x64 renders under QEMU).
+
+use std::collections::BTreeMap;
+use std::path::Path;
+
+/// The board QEMU emulates for each core.
+pub const CORTEX_M3_BOARD: &str = "lm3s6965evb";
+pub const CORTEX_M4F_BOARD: &str = "mps2-an386";
+
+/// Instructions per pixel keyed by (scene file stem, board, number type name).
+#[derive(Debug, Default)]
+pub struct FirmwareFigures {
+    per_pixel: BTreeMap<(String, String, String), u64>,
+}
+
+impl FirmwareFigures {
+    /// Reads `path`. A missing file gives no figures; an unreadable or malformed one is an
+    /// error naming the file and the problem.
+    pub fn read(path: &Path) -> Result<Self, String> {
+        let text = match std::fs::read_to_string(path) {
+            Ok(text) => text,
+            Err(error) if error.kind() == std::io::ErrorKind::NotFound => return Ok(Self::default()),
+            Err(error) => return Err(format!("{}: {error}", path.display())),
+        };
+        Self::parse(&text).map_err(|problem| format!("{}: {problem}", path.display()))
+    }
+
+    /// Parses `{"runs": [{"scene", "board", "number", "instructions_per_pixel", ...}, ...]}`.
+    /// The scene may be given with or without its `.mts` extension.
+    pub fn parse(text: &str) -> Result<Self, String> {
+        let json: serde_json::Value = serde_json::from_str(text).map_err(|error| format!("not JSON: {error}"))?;
+        let runs = json.get("runs").and_then(|runs| runs.as_array()).ok_or("no \"runs\" array")?;
+        let mut figures = Self::default();
+        for (position, run) in runs.iter().enumerate() {
+            let text_field = |key: &str| {
+                run.get(key).and_then(|value| value.as_str()).ok_or_else(|| format!("run {position} has no text \"{key}\""))
+            };
+            let scene = text_field("scene")?;
+            let scene = scene.strip_suffix(".mts").unwrap_or(scene);
+            let per_pixel = run
+                .get("instructions_per_pixel")
+                .and_then(|value| value.as_u64())
+                .ok_or_else(|| format!("run {position} has no whole-number \"instructions_per_pixel\""))?;
+            figures.per_pixel.insert((scene.to_owned(), text_field("board")?.to_owned(), text_field("number")?.to_owned()), per_pixel);
+        }
+        Ok(figures)
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.per_pixel.is_empty()
+    }
+
+    pub fn instructions_per_pixel(&self, scene: &str, board: &str, number: &str) -> Option<u64> {
+        self.per_pixel.get(&(scene.to_owned(), board.to_owned(), number.to_owned())).copied()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reads_runs_by_scene_board_and_number() {
+        let figures = FirmwareFigures::parse(
+            r#"{"runs":[{"scene":"snooker","board":"lm3s6965evb","number":"f32","instructions_per_pixel":900,"pixels":8192},
+                        {"scene":"lattice.mts","board":"mps2-an386","number":"fixed","instructions_per_pixel":450}]}"#,
+        )
+        .unwrap();
+        assert_eq!(figures.instructions_per_pixel("snooker", CORTEX_M3_BOARD, "f32"), Some(900));
+        assert_eq!(figures.instructions_per_pixel("lattice", CORTEX_M4F_BOARD, "fixed"), Some(450));
+        assert_eq!(figures.instructions_per_pixel("snooker", CORTEX_M4F_BOARD, "f32"), None);
+    }
+
+    #[test]
+    fn malformed_reports_name_the_problem() {
+        assert!(FirmwareFigures::parse("{").unwrap_err().contains("not JSON"));
+        assert!(FirmwareFigures::parse("{}").unwrap_err().contains("\"runs\""));
+        let error = FirmwareFigures::parse(r#"{"runs":[{"scene":"a","board":"b","number":"f32"}]}"#).unwrap_err();
+        assert!(error.contains("instructions_per_pixel"), "{error}");
+    }
+}
