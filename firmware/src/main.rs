@@ -29,21 +29,21 @@ use decimal::Decimal;
 use display::FramebufferAndDisplay;
 use semihosting::{print, HostFile};
 
+/// Sized by the scene: exactly its objects.
+type PreparedScene = Scene<scene::Number, { scene::OBJECT_COUNT }>;
+
 #[entry]
 fn main() -> ! {
+    // The prepared scene (objects, acceleration structures) is static RAM, zero-initialised
+    // and prepared in place: returned by value it would pass through the stack. (cortex-m-rt
+    // makes an entry's `static mut` a `&'static mut`.)
+    static mut SCENE: PreparedScene = PreparedScene::UNPREPARED;
     let display = board::init();
     let Some(pixels) = cortex_m::singleton!(: [u8; scene::PIXEL_COUNT] = [0; scene::PIXEL_COUNT]) else {
         fail("framebuffer taken twice")
     };
 
-    let scene = match Scene::<scene::Number, { scene::OBJECT_COUNT }>::prepare_with_objects(&scene::SCENE, &scene::OBJECTS) {
-        Ok(scene) => scene,
-        Err(error) => {
-            print("microtrace: the scene does not prepare, line ");
-            print(Decimal::new(error.line as u64).as_str());
-            fail("")
-        }
-    };
+    let scene = prepare(SCENE);
 
     let Some(framebuffer) = FrameBuffer::new(pixels, scene::WIDTH, scene::HEIGHT) else { fail("framebuffer size") };
     let mut sink = FramebufferAndDisplay {
@@ -53,7 +53,7 @@ fn main() -> ! {
     let mut statistics = Statistics::default();
 
     measurement::microtrace_measure_start();
-    render_pga(&scene, &mut sink, &mut statistics);
+    render_pga(scene, &mut sink, &mut statistics);
     measurement::microtrace_measure_end();
 
     let (stack_peak_bytes, stack_size_bytes) = stack::peak_and_size();
@@ -83,6 +83,19 @@ fn main() -> ! {
     print("microtrace: done\n");
     let captured = board::hold_picture_for_capture();
     semihosting::exit(captured)
+}
+
+/// Out of line: preparing's temporaries are off the stack before the render's are on it.
+#[inline(never)]
+fn prepare(scene: &'static mut PreparedScene) -> &'static PreparedScene {
+    match scene.prepare_in_place(&scene::SCENE, &scene::OBJECTS) {
+        Ok(()) => scene,
+        Err(error) => {
+            print("microtrace: the scene does not prepare, line ");
+            print(Decimal::new(error.line as u64).as_str());
+            fail("")
+        }
+    }
 }
 
 /// Reports `why` and ends the run with failure.

@@ -43,6 +43,18 @@ pub struct Camera<N> {
 }
 
 impl<N: Number> Camera<N> {
+    /// Every byte zero, no camera at all: the value of a scene before it is prepared in place
+    /// (`Scene::UNPREPARED`, which then costs only zero-initialised RAM).
+    pub const UNSET: Self = Self {
+        viewport: Viewport { x1: 0, x2: 0, y1: 0, y2: 0 },
+        window_x1: N::ZERO,
+        window_y1: N::ZERO,
+        spacing_x: N::ZERO,
+        spacing_y: N::ZERO,
+        view_plane: N::ZERO,
+        origin: RayOrigin::Parallel { direction: Vector3 { x: N::ZERO, y: N::ZERO, z: N::ZERO } },
+    };
+
     /// `None` when the parallel direction is zero.
     pub fn new(viewport: Viewport, window: Window, view_plane: f64, projection: Projection) -> Option<Self> {
         let spacing = |from: f64, to: f64, pixels: u16| {

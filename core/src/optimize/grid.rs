@@ -50,6 +50,17 @@ pub struct Grid<N, const MAX_OBJECTS: usize> {
 }
 
 impl<N: Number, const MAX_OBJECTS: usize> Grid<N, MAX_OBJECTS> {
+    /// Every byte zero, inactive: the value before [`Grid::rebuild`] (a `static` holding it
+    /// costs zero-initialised RAM and no flash).
+    pub const UNSET: Self = Self {
+        active: false,
+        cell_width: 0,
+        cell_height: 0,
+        starts: [0; CELLS + 1],
+        pool: [[[0; 3]; POOL_PER_OBJECT]; MAX_OBJECTS],
+        depth: [[N::ZERO; POOL_PER_OBJECT]; MAX_OBJECTS],
+    };
+
     pub fn inactive() -> Self {
         Self {
             active: false,
@@ -72,9 +83,26 @@ impl<N: Number, const MAX_OBJECTS: usize> Grid<N, MAX_OBJECTS> {
         depth: Option<&BlockDepth<'_, N>>,
     ) -> Self {
         let mut grid = Self::inactive();
+        grid.rebuild(screen, order, extents, polygon, cell_rectangles, depth);
+        grid
+    }
+
+    /// [`Grid::build`] in place, so that a grid in a `static` (the firmware's) is never copied
+    /// through the stack.
+    pub fn rebuild(
+        &mut self,
+        screen: &Screen,
+        order: &[u16],
+        extents: &[Extent],
+        polygon: impl Fn(usize) -> Projected,
+        cell_rectangles: bool,
+        depth: Option<&BlockDepth<'_, N>>,
+    ) {
+        self.clear();
         if POOL_PER_OBJECT == 0 {
-            return grid;
+            return;
         }
+        let grid = self;
         let (cell_width, cell_height) = ((screen.width - 1) / GRID_SIZE + 1, (screen.height - 1) / GRID_SIZE + 1);
         grid.cell_width = cell_width;
         grid.cell_height = cell_height;
@@ -125,7 +153,8 @@ impl<N: Number, const MAX_OBJECTS: usize> Grid<N, MAX_OBJECTS> {
             used += *count as usize;
         }
         if used > capacity {
-            return Self::inactive();
+            grid.clear();
+            return;
         }
         grid.starts[CELLS] = used as u16;
         let mut next: [u16; CELLS] = core::array::from_fn(|cell| grid.starts[cell]);
@@ -163,7 +192,16 @@ impl<N: Number, const MAX_OBJECTS: usize> Grid<N, MAX_OBJECTS> {
             }
         }
         grid.active = true;
-        grid
+    }
+
+    /// Back to [`Grid::inactive`], in place.
+    pub fn clear(&mut self) {
+        self.active = false;
+        self.cell_width = 1;
+        self.cell_height = 1;
+        self.starts.fill(0);
+        self.pool.as_flattened_mut().fill([0; 3]);
+        self.depth.as_flattened_mut().fill(-N::MAX);
     }
 
     /// The entries of the cell holding image pixel (column, row), and the pixel's offsets

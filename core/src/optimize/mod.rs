@@ -77,72 +77,88 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
     }
 
     pub fn build_with(camera: &Camera<N>, optimizations: Optimizations, objects: &[ObjectDescription], tuning: Tuning) -> Self {
+        let mut acceleration = Self::UNSET;
+        acceleration.rebuild(camera, optimizations, objects, tuning);
+        acceleration
+    }
+
+    /// Every byte zero, nothing built: the value before [`Acceleration::rebuild`] (a `static`
+    /// holding it costs zero-initialised RAM and no flash).
+    pub const UNSET: Self = Self {
+        count: 0,
+        optimizations: Optimizations::NONE,
+        tuning: Tuning::THESIS,
+        screen: Screen::UNSET,
+        order: [0; MAX_OBJECTS],
+        extents: [Extent { first_column: 0, last_column: 0, first_row: 0, last_row: 0, diagonal: [0; 4] }; MAX_OBJECTS],
+        near: [N::ZERO; MAX_OBJECTS],
+        #[cfg(feature = "acceleration-tables")]
+        shadow: [ShadowBound::UNSET; MAX_OBJECTS],
+        grid: Grid::UNSET,
+    };
+
+    /// [`Acceleration::build_with`] in place, so that the structures in a `static` (the
+    /// firmware's scene) are never copied through the stack.
+    pub fn rebuild(&mut self, camera: &Camera<N>, optimizations: Optimizations, objects: &[ObjectDescription], tuning: Tuning) {
         let count = objects.len().min(MAX_OBJECTS).min(usize::from(u16::MAX));
         let screen = Screen::new(camera);
-        let mut acceleration = Self {
-            count,
-            optimizations,
-            tuning,
-            screen,
-            order: core::array::from_fn(|i| i as u16),
-            extents: [Extent::whole(&screen); MAX_OBJECTS],
-            near: [-N::MAX; MAX_OBJECTS],
-            #[cfg(feature = "acceleration-tables")]
-            shadow: [ShadowBound::always(); MAX_OBJECTS],
-            grid: Grid::inactive(),
-        };
+        self.count = count;
+        self.optimizations = optimizations;
+        self.tuning = tuning;
+        self.screen = screen;
+        for (index, place) in self.order.iter_mut().enumerate() {
+            *place = index as u16;
+        }
+        self.extents.fill(Extent::whole(&screen));
+        self.near.fill(-N::MAX);
+        #[cfg(feature = "acceleration-tables")]
+        self.shadow.fill(ShadowBound::always());
         let corners = window_corners(&screen, camera);
         for (index, description) in objects.iter().take(count).enumerate() {
             // The geometry as the tracer will see it: the inverse rounded to N, inverted back.
             let Some(geometry) = rendered_geometry::<N>(description) else { continue };
             if optimizations.extents || optimizations.grid {
-                acceleration.extents[index] = Extent::of(&screen, &screen.project_object(&geometry, tuning.tight_silhouettes));
+                self.extents[index] = Extent::of(&screen, &screen.project_object(&geometry, tuning.tight_silhouettes));
             }
             if optimizations.sortlist {
                 if let Some(bound) = sortlist::depth_bound(&screen, &corners, &geometry) {
-                    acceleration.near[index] = N::from_f64(bound);
+                    self.near[index] = N::from_f64(bound);
                 }
             }
             #[cfg(feature = "acceleration-tables")]
             if tuning.shadow_culling && optimizations.extents {
                 let (start, end, radius) = geometry.bounding_capsule();
-                acceleration.shadow[index] = ShadowBound::new(start, end, radius);
+                self.shadow[index] = ShadowBound::new(start, end, radius);
             }
         }
         if optimizations.sortlist {
-            let near = acceleration.near;
-            sortlist::sort_by_bound(&mut acceleration.order[..count], |i| near[i]);
+            let near = &self.near;
+            sortlist::sort_by_bound(&mut self.order[..count], |i| near[i]);
         }
-        if optimizations.grid {
-            let polygon = |index: usize| match objects.get(index).and_then(rendered_geometry::<N>) {
-                Some(geometry) => screen.project_object(&geometry, tuning.tight_silhouettes),
-                None => projection::Projected::Whole,
-            };
-            let near = acceleration.near;
-            let block_depth = |object: u16, columns: (u16, u16), rows: (u16, u16)| -> N {
-                let index = usize::from(object);
-                let global = near.get(index).copied().unwrap_or(-N::MAX);
-                let block = objects
-                    .get(index)
-                    .and_then(rendered_geometry::<N>)
-                    .and_then(|geometry| sortlist::block_depth_bound(&screen, &geometry, columns, rows));
-                match block {
-                    Some(bound) if N::from_f64(bound) > global => N::from_f64(bound),
-                    _ => global,
-                }
-            };
-            let depth: Option<&grid::BlockDepth<'_, N>> =
-                if optimizations.sortlist && tuning.cell_rectangles { Some(&block_depth) } else { None };
-            acceleration.grid = Grid::build(
-                &screen,
-                &acceleration.order[..count],
-                &acceleration.extents[..count],
-                polygon,
-                tuning.cell_rectangles,
-                depth,
-            );
+        if !optimizations.grid {
+            self.grid.clear();
+            return;
         }
-        acceleration
+        let polygon = |index: usize| match objects.get(index).and_then(rendered_geometry::<N>) {
+            Some(geometry) => screen.project_object(&geometry, tuning.tight_silhouettes),
+            None => projection::Projected::Whole,
+        };
+        let near = &self.near;
+        let block_depth = |object: u16, columns: (u16, u16), rows: (u16, u16)| -> N {
+            let index = usize::from(object);
+            let global = near.get(index).copied().unwrap_or(-N::MAX);
+            let block = objects
+                .get(index)
+                .and_then(rendered_geometry::<N>)
+                .and_then(|geometry| sortlist::block_depth_bound(&screen, &geometry, columns, rows));
+            match block {
+                Some(bound) if N::from_f64(bound) > global => N::from_f64(bound),
+                _ => global,
+            }
+        };
+        let depth: Option<&grid::BlockDepth<'_, N>> =
+            if optimizations.sortlist && tuning.cell_rectangles { Some(&block_depth) } else { None };
+        self.grid.rebuild(&screen, &self.order[..count], &self.extents[..count], polygon, tuning.cell_rectangles, depth);
     }
 
     /// Grid: the entries of the pixel's cell and the pixel's offsets in it; `None` without a grid.

@@ -49,6 +49,18 @@ pub enum View {
 pub const MARGIN: f64 = 0.1;
 
 impl Screen {
+    /// Every byte zero: the value before [`crate::optimize::Acceleration::rebuild`].
+    pub const UNSET: Self = Self {
+        width: 0,
+        height: 0,
+        x0: 0.0,
+        y0: 0.0,
+        spacing_x: 0.0,
+        spacing_y: 0.0,
+        view_plane: 0.0,
+        view: View::Parallel { direction: [0.0; 3] },
+    };
+
     pub fn new<N: Number>(camera: &Camera<N>) -> Self {
         let (width, height) = (camera.width(), camera.height());
         let first = camera.view_plane_point(camera.pixel(0, height - 1)).to_f64();

@@ -27,6 +27,15 @@ pub struct ShadowBound<N> {
 }
 
 impl<N: Number> ShadowBound<N> {
+    /// Every byte zero: the value before the acceleration is built.
+    pub const UNSET: Self = Self {
+        centre: Vector3 { x: N::ZERO, y: N::ZERO, z: N::ZERO },
+        axis: Vector3 { x: N::ZERO, y: N::ZERO, z: N::ZERO },
+        half: N::ZERO,
+        radius: N::ZERO,
+        reach: N::ZERO,
+    };
+
     pub fn always() -> Self {
         Self { centre: Vector3::zero(), axis: Vector3::zero(), half: N::ZERO, radius: N::MAX, reach: N::MAX }
     }

@@ -166,7 +166,7 @@ pub fn block_depth_bound(screen: &Screen, geometry: &ObjectGeometry, columns: (u
         View::Perspective { .. } => {
             let e = depth_of;
             let squared = dot(ab, ab);
-            let s = if squared > 0.0 { (dot([e[0] - a[0], e[1] - a[1], e[2] - a[2]], ab) / squared).clamp(s_low, s_high) } else { s_low };
+            let s = if squared > 0.0 { within(dot([e[0] - a[0], e[1] - a[1], e[2] - a[2]], ab) / squared, s_low, s_high) } else { s_low };
             let p = [a[0] + s * ab[0], a[1] + s * ab[1], a[2] + s * ab[2]];
             let v = [p[0] - e[0], p[1] - e[1], p[2] - e[2]];
             libm::sqrt(dot(v, v))
@@ -178,4 +178,16 @@ pub fn block_depth_bound(screen: &Screen, geometry: &ObjectGeometry, columns: (u
     };
     let bound = nearest - slack;
     bound.is_finite().then(|| bound - 1e-3 * (bound.abs() + 1.0))
+}
+
+/// `value.clamp(low, high)` for `low <= high` (checked by the caller), without `f64::clamp`'s
+/// panic, whose message would link float formatting (about 10 KB) into the firmware.
+fn within(value: f64, low: f64, high: f64) -> f64 {
+    if value < low {
+        low
+    } else if value > high {
+        high
+    } else {
+        value
+    }
 }

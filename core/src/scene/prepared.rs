@@ -10,11 +10,11 @@ use heapless::Vec;
 use crate::camera::Camera;
 use crate::geometry::{AffineTransform, Vector3};
 use crate::number::Number;
-use crate::optimize::Acceleration;
+use crate::optimize::{Acceleration, Tuning};
 use crate::parser::{SceneError, SceneErrorKind};
 use crate::scene::range::{self, RayOrigins};
 use crate::scene::{Light, ObjectDescription, Optimizations, Primitive, SceneDescription, Viewport};
-use crate::shading::{Palette, ShadingConstants};
+use crate::shading::{Palette, Rgb4, ShadingConstants};
 
 /// An object's surface constants in the number type.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -73,9 +73,82 @@ impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
         description: &SceneDescription<CAPACITY>,
         descriptions: &[ObjectDescription],
     ) -> Result<Self, SceneError> {
+        let mut scene = Self::UNPREPARED;
+        scene.prepare_in_place(description, descriptions)?;
+        Ok(scene)
+    }
+
+    /// Every byte zero, no objects: the value of a scene to be prepared in place. The firmware
+    /// keeps its scene in a `static` of this value (zero-initialised RAM, no flash) and
+    /// prepares it there: a scene returned by value would pass through the stack.
+    pub const UNPREPARED: Self = Self {
+        objects: Vec::new(),
+        camera: Camera::UNSET,
+        light: PreparedLight::Point(Vector3 { x: N::ZERO, y: N::ZERO, z: N::ZERO }),
+        constants: ShadingConstants {
+            fifteen: N::ZERO,
+            brightest: N::ZERO,
+            half: N::ZERO,
+            noise_step: N::ZERO,
+            ambient: N::ZERO,
+            full_rgb: N::ZERO,
+            brightest_rgb: N::ZERO,
+        },
+        background: 0,
+        shadows: false,
+        dither: false,
+        optimizations: Optimizations::NONE,
+        palette: Palette { entries: [Rgb4 { r: 0, g: 0, b: 0 }; 256] },
+        acceleration: Acceleration::UNSET,
+    };
+
+    /// [`Scene::prepare_with_objects`] into `self`, every part written in place (any earlier
+    /// scene is replaced).
+    pub fn prepare_in_place<const CAPACITY: usize>(
+        &mut self,
+        description: &SceneDescription<CAPACITY>,
+        descriptions: &[ObjectDescription],
+    ) -> Result<(), SceneError> {
+        let (camera, light) = Self::camera_and_light(description)?;
+        self.camera = camera;
+        self.light = light;
+        self.constants = ShadingConstants::new(description.ambient);
+        self.background = description.background;
+        self.shadows = description.shadows;
+        self.dither = description.dither;
+        self.optimizations = description.optimizations;
+        self.palette = description.palette;
+        self.prepare_objects(description, descriptions)
+    }
+
+    fn camera_and_light<const CAPACITY: usize>(
+        description: &SceneDescription<CAPACITY>,
+    ) -> Result<(Camera<N>, PreparedLight<N>), SceneError> {
+        let camera = Camera::new(description.viewport, description.window, description.view_plane, description.projection)
+            .ok_or(SceneError { line: 0, kind: SceneErrorKind::ZeroDirection })?;
+        let light = match description.light {
+            Light::Point(position) => PreparedLight::Point(Vector3::from_f64(position)),
+            Light::Direction(direction) => {
+                let length = libm::sqrt(direction.iter().map(|c| c * c).sum::<f64>());
+                if length == 0.0 || !length.is_finite() {
+                    return Err(SceneError { line: 0, kind: SceneErrorKind::ZeroDirection });
+                }
+                PreparedLight::Direction(Vector3::from_f64(direction.map(|c| c / length)))
+            }
+        };
+        Ok((camera, light))
+    }
+
+    /// Prepares the objects into `self.objects` and builds the acceleration structures, in place.
+    fn prepare_objects<const CAPACITY: usize>(
+        &mut self,
+        description: &SceneDescription<CAPACITY>,
+        descriptions: &[ObjectDescription],
+    ) -> Result<(), SceneError> {
         range::check_camera_and_light::<N, CAPACITY>(description)?;
         let origins = RayOrigins::of(description, descriptions);
-        let mut objects = Vec::new();
+        let objects = &mut self.objects;
+        objects.clear();
         for object in descriptions {
             let error = |kind| SceneError { line: object.line, kind };
             if !object.primitive.is_compiled() {
@@ -99,31 +172,8 @@ impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
             };
             objects.push(prepared).map_err(|_| error(SceneErrorKind::TooManyObjects { capacity: MAX_OBJECTS }))?;
         }
-        let camera = Camera::new(description.viewport, description.window, description.view_plane, description.projection)
-            .ok_or(SceneError { line: 0, kind: SceneErrorKind::ZeroDirection })?;
-        let light = match description.light {
-            Light::Point(position) => PreparedLight::Point(Vector3::from_f64(position)),
-            Light::Direction(direction) => {
-                let length = libm::sqrt(direction.iter().map(|c| c * c).sum::<f64>());
-                if length == 0.0 || !length.is_finite() {
-                    return Err(SceneError { line: 0, kind: SceneErrorKind::ZeroDirection });
-                }
-                PreparedLight::Direction(Vector3::from_f64(direction.map(|c| c / length)))
-            }
-        };
-        let acceleration = Acceleration::build(&camera, description.optimizations, descriptions);
-        Ok(Self {
-            objects,
-            camera,
-            light,
-            constants: ShadingConstants::new(description.ambient),
-            background: description.background,
-            shadows: description.shadows,
-            dither: description.dither,
-            optimizations: description.optimizations,
-            palette: description.palette,
-            acceleration,
-        })
+        self.acceleration.rebuild(&self.camera, description.optimizations, descriptions, Tuning::IMPROVED);
+        Ok(())
     }
 
     pub fn viewport(&self) -> Viewport {
