@@ -40,11 +40,26 @@ impl<N: Number> Vector3<N> {
         N::length3(self.to_array())
     }
 
-    /// The unit vector in the same direction, or `None` for the zero vector.
+    /// The unit vector in the same direction, or `None` for the zero vector. The vector is
+    /// first scaled by a power of two to a largest component in [1, 2): exact in floating point
+    /// (the result is unchanged), and in fixed point it keeps a short vector (the world normal
+    /// of a large object has components of about one over its size) from losing the
+    /// significant bits of its squares (a Q32.32 normal was 8·10⁻⁴ too long at size 4000).
     pub fn normalized(self) -> Option<Self> {
-        let length = self.length();
-        let reciprocal = N::ONE.checked_div(length)?;
-        Some(self * reciprocal)
+        let exponent = self.largest_component().binary_exponent()?;
+        let scaled = self.times_power_of_two(-exponent);
+        let reciprocal = N::ONE.checked_div(scaled.length())?;
+        Some(scaled * reciprocal)
+    }
+
+    /// The largest magnitude among the components.
+    pub fn largest_component(self) -> N {
+        self.x.abs().max(self.y.abs()).max(self.z.abs())
+    }
+
+    /// Each component times 2^`exponent` (see [`Number::times_power_of_two`]).
+    pub fn times_power_of_two(self, exponent: i32) -> Self {
+        Self::new(self.x.times_power_of_two(exponent), self.y.times_power_of_two(exponent), self.z.times_power_of_two(exponent))
     }
 
     pub fn component(self, axis: usize) -> N {
@@ -81,5 +96,39 @@ impl<N: Number> Mul<N> for Vector3<N> {
     type Output = Self;
     fn mul(self, scale: N) -> Self {
         Self::new(self.x * scale, self.y * scale, self.z * scale)
+    }
+}
+
+#[cfg(all(test, feature = "fixed-point"))]
+mod tests {
+    use super::Vector3;
+    use crate::number::{Fixed, Fixed16, Number};
+
+    /// A short vector (the world normal of an object 4000 units across) normalises to unit
+    /// length in fixed point; before scaling it first, Q32.32 was 8·10⁻⁴ too long.
+    fn check_short_vector<N: Number>(tolerance: f64, direction_tolerance: f64) {
+        let short = Vector3::<N>::from_f64([7.972e-5, 0.0, 2.369e-4]);
+        let unit = short.normalized().unwrap().to_f64();
+        let length = (unit[0] * unit[0] + unit[1] * unit[1] + unit[2] * unit[2]).sqrt();
+        assert!((length - 1.0).abs() < tolerance, "{} {length}", N::NAME);
+        // The direction is kept, to the conversion of the input (2⁻³² on 8·10⁻⁵ in Q32.32; only
+        // five LSBs in Q16.16).
+        assert!((unit[0] / unit[2] - 7.972e-5 / 2.369e-4).abs() < direction_tolerance, "{} {unit:?}", N::NAME);
+    }
+
+    #[test]
+    fn short_vectors_normalise_to_unit_length() {
+        check_short_vector::<f64>(1e-15, 1e-14);
+        check_short_vector::<f32>(1e-6, 1e-6);
+        check_short_vector::<Fixed>(1e-8, 1e-5);
+        check_short_vector::<Fixed16>(1e-4, 0.1);
+        assert_eq!(Vector3::<Fixed>::zero().normalized(), None);
+    }
+
+    #[test]
+    fn scaling_by_a_power_of_two_leaves_float_results_unchanged() {
+        let v = Vector3::<f64>::from_f64([1e-3, -2.5e-4, 7.0e-4]);
+        let length = Number::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+        assert_eq!(v.normalized().unwrap(), v * (1.0 / length));
     }
 }

@@ -215,6 +215,24 @@ fn sqrt_q32(raw: i64) -> i64 {
     (rounded << ((32 - s) / 2)) as i64
 }
 
+/// `bits·2^exponent`: a left shift that saturates instead of losing the top bits, or a right
+/// shift rounded to nearest (ties up).
+fn shift_bits_i64(bits: i64, exponent: i32) -> i64 {
+    if exponent >= 0 {
+        let shift = exponent.unsigned_abs();
+        match bits.checked_shl(shift) {
+            Some(shifted) if shift < 64 && shifted >> shift == bits => shifted,
+            _ if bits == 0 => 0,
+            _ if bits < 0 => i64::MIN,
+            _ => i64::MAX,
+        }
+    } else {
+        let shift = exponent.unsigned_abs().min(63);
+        // bits/2^shift rounded: (bits + 2^(shift−1)) >> shift, without overflowing near MAX.
+        (bits >> shift) + ((bits >> (shift - 1)) & 1)
+    }
+}
+
 impl fmt::Debug for Fixed {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "Fixed({})", self.to_f64())
@@ -290,6 +308,15 @@ impl Number for Fixed {
     fn floor_to_i32(self) -> i32 {
         // An arithmetic shift floors; any i64 shifted right by 32 fits an i32.
         (self.to_bits() >> 32) as i32
+    }
+
+    fn times_power_of_two(self, exponent: i32) -> Self {
+        Self::from_bits(shift_bits_i64(self.to_bits(), exponent))
+    }
+
+    fn binary_exponent(self) -> Option<i32> {
+        let magnitude = self.to_bits().unsigned_abs();
+        (magnitude != 0).then(|| 63 - magnitude.leading_zeros() as i32 - 32)
     }
 
     fn abs(self) -> Self {
@@ -450,6 +477,15 @@ impl Number for Fixed16 {
 
     fn floor_to_i32(self) -> i32 {
         self.to_bits() >> 16
+    }
+
+    fn times_power_of_two(self, exponent: i32) -> Self {
+        Self::from_bits(saturate_i32(shift_bits_i64(i64::from(self.to_bits()), exponent)))
+    }
+
+    fn binary_exponent(self) -> Option<i32> {
+        let magnitude = self.to_bits().unsigned_abs();
+        (magnitude != 0).then(|| 31 - magnitude.leading_zeros() as i32 - 16)
     }
 
     fn abs(self) -> Self {

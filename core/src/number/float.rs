@@ -4,7 +4,7 @@
 use super::Number;
 
 macro_rules! float_number {
-    ($type:ty, $name:literal, $limit:expr, $sqrt:path, $floor:path) => {
+    ($type:ty, $name:literal, $limit:expr, $sqrt:path, $floor:path, $bits:ty, $mantissa:literal, $bias:literal) => {
         impl Number for $type {
             const NAME: &'static str = $name;
             const SCENE_LIMIT: f64 = $limit;
@@ -48,13 +48,40 @@ macro_rules! float_number {
                 // `as` saturates and maps NaN to 0.
                 $floor(self) as i32
             }
+
+            fn times_power_of_two(self, exponent: i32) -> Self {
+                // In steps the factor itself can represent (a normal power of two).
+                let limit = $bias - 1;
+                let mut value = self;
+                let mut remaining = exponent;
+                while remaining != 0 {
+                    let step = remaining.clamp(-limit, limit);
+                    let factor = <$type>::from_bits(((step + $bias) as $bits) << $mantissa);
+                    value *= factor;
+                    remaining -= step;
+                }
+                value
+            }
+
+            fn binary_exponent(self) -> Option<i32> {
+                if self == 0.0 || !self.is_finite() {
+                    return None;
+                }
+                let biased = ((self.to_bits() >> $mantissa) as i32) & (2 * $bias + 1);
+                if biased != 0 {
+                    Some(biased - $bias)
+                } else {
+                    // Subnormal: scale into the normal range first.
+                    Number::binary_exponent(self.times_power_of_two($mantissa)).map(|e| e - $mantissa)
+                }
+            }
         }
     };
 }
 
-float_number!(f64, "f64", f64::INFINITY, libm::sqrt, libm::floor);
+float_number!(f64, "f64", f64::INFINITY, libm::sqrt, libm::floor, u64, 52, 1023);
 // Three squares of 10¹⁸ (3·10³⁶) stay below f32::MAX (3.4·10³⁸): no infinities from dot products.
-float_number!(f32, "f32", 1e18, libm::sqrtf, libm::floorf);
+float_number!(f32, "f32", 1e18, libm::sqrtf, libm::floorf, u32, 23, 127);
 
 #[cfg(test)]
 mod tests {
@@ -71,6 +98,17 @@ mod tests {
     fn zero_divisor_is_none_and_overflow_saturates() {
         assert_eq!(1.0f32.checked_div(0.0), None);
         assert_eq!(1e30f32.checked_div(1e-30), Some(f32::MAX));
+    }
+
+    #[test]
+    fn powers_of_two_and_exponents() {
+        assert_eq!(3.0f64.times_power_of_two(-2), 0.75);
+        assert_eq!(1.5f32.times_power_of_two(-130), 1.5 * f32::from_bits(1 << 23) / 16.0);
+        assert_eq!(1.0f64.times_power_of_two(-1074), f64::from_bits(1));
+        assert_eq!(Number::binary_exponent(0.75f64), Some(-1));
+        assert_eq!(Number::binary_exponent(-8.0f32), Some(3));
+        assert_eq!(Number::binary_exponent(f64::from_bits(1)), Some(-1074));
+        assert_eq!(Number::binary_exponent(0.0f32), None);
     }
 
     #[test]

@@ -96,4 +96,12 @@ impl Number for F32Micro {
     fn floor_to_i32(self) -> i32 {
         self.0.floor_to_i32()
     }
+
+    fn times_power_of_two(self, exponent: i32) -> Self {
+        Self(self.0.times_power_of_two(exponent))
+    }
+
+    fn binary_exponent(self) -> Option<i32> {
+        Number::binary_exponent(self.0)
+    }
 }

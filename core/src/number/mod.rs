@@ -106,6 +106,13 @@ pub trait Number:
         Self::dot3(v, v).sqrt()
     }
 
+    /// `self·2^exponent`: exact in floating point (away from overflow and underflow); in fixed
+    /// point exact for positive exponents (saturating) and rounded to nearest for negative ones.
+    fn times_power_of_two(self, exponent: i32) -> Self;
+
+    /// The `e` with `2^e ≤ |self| < 2^(e+1)`; `None` for zero.
+    fn binary_exponent(self) -> Option<i32>;
+
     /// The documented range of scene values: the largest magnitude [`Number::can_represent`]
     /// accepts. Infinite for `f64`.
     const SCENE_LIMIT: f64 = f64::INFINITY;

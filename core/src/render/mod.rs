@@ -7,7 +7,7 @@ mod statistics;
 mod trace;
 
 pub use primary::{nearest_hit, nearest_hit_cached, NearestHit};
-pub use shadow::{in_shadow, in_shadow_cached, in_shadow_culled, ShadowCache, ShadowCulling};
+pub use shadow::{in_shadow, in_shadow_cached, in_shadow_culled, shadow_origin, ShadowCache, ShadowCulling};
 pub use statistics::Statistics;
 pub use trace::{fill_volumes, render_pga, render_rgb, shade_pixel, ShadedPixel};
 

@@ -1,6 +1,6 @@
 //! Tracing a whole image, top row first (digest §3.4), into a [`PixelSink`].
 
-use super::shadow::{in_shadow_culled, ShadowCache, ShadowCulling};
+use super::shadow::{in_shadow_culled, shadow_origin, ShadowCache, ShadowCulling};
 #[cfg(feature = "acceleration-tables")]
 use crate::geometry::Vector3;
 use super::primary::nearest_hit_cached;
@@ -62,7 +62,7 @@ fn shade_pixel_cached<N: Number, const MAX_OBJECTS: usize>(
     };
     // A surface facing away from the light is unlit with or without a shadow ray.
     let faces_light = normal.dot(to_light) > N::ZERO;
-    let shadowed = scene.shadows && faces_light && in_shadow_culled(scene, hit.object, point, to_light, light_distance, statistics, cache, culling);
+    let shadowed = scene.shadows && faces_light && in_shadow_culled(scene, hit.object, shadow_origin(point, normal), to_light, light_distance, statistics, cache, culling);
     ShadedPixel::Surface {
         material: object.material,
         lighting: lighting(normal, to_light, ray.direction, object.material.power, shadowed),

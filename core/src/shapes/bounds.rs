@@ -36,3 +36,23 @@ impl<N: Number> Interval<N> {
         }
     }
 }
+
+/// An [`Interval`] for a ray whose direction was scaled by 2^−`exponent` (see
+/// `shapes::scaled_to_unit`): a parameter along the scaled ray is converted back by 2^`exponent`
+/// before it is compared, so bounds and ties behave exactly as on the original ray.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ScaledInterval<N> {
+    pub interval: Interval<N>,
+    pub exponent: i32,
+}
+
+impl<N: Number> ScaledInterval<N> {
+    /// A parameter along the scaled ray as a parameter along the original ray.
+    pub fn unscale(&self, t: N) -> N {
+        t.times_power_of_two(self.exponent)
+    }
+
+    pub fn contains(&self, t: N) -> bool {
+        self.interval.contains(self.unscale(t))
+    }
+}

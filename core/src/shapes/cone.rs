@@ -2,7 +2,7 @@
 //! (`tracecone`). Side normal is the gradient of x² + y² − z², i.e. (x, y, −z); the thesis's
 //! (x, y, √(1 − z²)) was wrong (digest §11 B3).
 
-use super::{quadratic, Hit, Interval};
+use super::{quadratic, Hit, ScaledInterval};
 use crate::geometry::{Ray, Vector3};
 use crate::number::Number;
 
@@ -57,7 +57,7 @@ fn surfaces<N: Number>(ray: &Ray<N>) -> [Option<(N, Vector3<N>)>; 3] {
     found
 }
 
-pub fn intersect<N: Number>(ray: &Ray<N>, interval: Interval<N>) -> Option<Hit<N>> {
+pub fn intersect<N: Number>(ray: &Ray<N>, interval: ScaledInterval<N>) -> Option<Hit<N>> {
     let mut best: Option<Hit<N>> = None;
     for (t, normal) in surfaces(ray).into_iter().flatten() {
         if interval.contains(t) && best.map_or(true, |hit| t < hit.t) {
@@ -67,6 +67,6 @@ pub fn intersect<N: Number>(ray: &Ray<N>, interval: Interval<N>) -> Option<Hit<N
     best
 }
 
-pub fn occluded<N: Number>(ray: &Ray<N>, interval: Interval<N>) -> bool {
+pub fn occluded<N: Number>(ray: &Ray<N>, interval: ScaledInterval<N>) -> bool {
     surfaces(ray).into_iter().flatten().any(|(t, _)| interval.contains(t))
 }

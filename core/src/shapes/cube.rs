@@ -1,7 +1,7 @@
 //! The unit cube `[0,1]^3` (`tracecube`), by slabs: the ray is inside the cube where it is
 //! between all three pairs of planes. Bounds are inclusive, as in the thesis.
 
-use super::{Hit, Interval};
+use super::{Hit, ScaledInterval};
 use crate::geometry::{Ray, Vector3};
 use crate::number::Number;
 
@@ -37,12 +37,12 @@ fn span<N: Number>(ray: &Ray<N>) -> Option<((N, Vector3<N>), (N, Vector3<N>))> {
     (moving && enter.0 <= exit.0).then_some((enter, exit))
 }
 
-pub fn intersect<N: Number>(ray: &Ray<N>, interval: Interval<N>) -> Option<Hit<N>> {
+pub fn intersect<N: Number>(ray: &Ray<N>, interval: ScaledInterval<N>) -> Option<Hit<N>> {
     let (enter, exit) = span(ray)?;
     [enter, exit].into_iter().find(|(t, _)| interval.contains(*t)).map(|(t, normal)| Hit { t, normal })
 }
 
-pub fn occluded<N: Number>(ray: &Ray<N>, interval: Interval<N>) -> bool {
+pub fn occluded<N: Number>(ray: &Ray<N>, interval: ScaledInterval<N>) -> bool {
     match span(ray) {
         Some((enter, exit)) => interval.contains(enter.0) || interval.contains(exit.0),
         None => false,

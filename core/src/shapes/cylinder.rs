@@ -1,6 +1,6 @@
 //! The unit cylinder: radius 1 about +z, from z = 0 to z = 1, both caps (`tracecylinder`).
 
-use super::{quadratic, Hit, Interval};
+use super::{quadratic, Hit, ScaledInterval};
 use crate::geometry::{Ray, Vector3};
 use crate::number::Number;
 
@@ -43,7 +43,7 @@ fn surfaces<N: Number>(ray: &Ray<N>) -> [Option<(N, Vector3<N>)>; 4] {
     found
 }
 
-pub fn intersect<N: Number>(ray: &Ray<N>, interval: Interval<N>) -> Option<Hit<N>> {
+pub fn intersect<N: Number>(ray: &Ray<N>, interval: ScaledInterval<N>) -> Option<Hit<N>> {
     let mut best: Option<Hit<N>> = None;
     for (t, normal) in surfaces(ray).into_iter().flatten() {
         if interval.contains(t) && best.map_or(true, |hit| t < hit.t) {
@@ -53,6 +53,6 @@ pub fn intersect<N: Number>(ray: &Ray<N>, interval: Interval<N>) -> Option<Hit<N
     best
 }
 
-pub fn occluded<N: Number>(ray: &Ray<N>, interval: Interval<N>) -> bool {
+pub fn occluded<N: Number>(ray: &Ray<N>, interval: ScaledInterval<N>) -> bool {
     surfaces(ray).into_iter().flatten().any(|(t, _)| interval.contains(t))
 }

@@ -1,6 +1,6 @@
 //! The unit sphere at the origin (`tracesphere`, `stracesphere`).
 
-use super::{quadratic, Hit, Interval};
+use super::{quadratic, Hit, ScaledInterval};
 use crate::geometry::Ray;
 use crate::number::Number;
 
@@ -17,13 +17,13 @@ fn candidate_roots<N: Number>(ray: &Ray<N>) -> Option<[Option<N>; 2]> {
     Some(quadratic::roots(a, b, c, discriminant))
 }
 
-pub fn intersect<N: Number>(ray: &Ray<N>, interval: Interval<N>) -> Option<Hit<N>> {
+pub fn intersect<N: Number>(ray: &Ray<N>, interval: ScaledInterval<N>) -> Option<Hit<N>> {
     let roots = candidate_roots(ray)?;
     let t = roots.iter().flatten().copied().find(|t| interval.contains(*t))?;
     Some(Hit { t, normal: ray.at(t) })
 }
 
-pub fn occluded<N: Number>(ray: &Ray<N>, interval: Interval<N>) -> bool {
+pub fn occluded<N: Number>(ray: &Ray<N>, interval: ScaledInterval<N>) -> bool {
     match candidate_roots(ray) {
         Some(roots) => roots.iter().flatten().any(|t| interval.contains(*t)),
         None => false,
