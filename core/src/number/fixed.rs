@@ -511,3 +511,29 @@ impl Number for Fixed16 {
     }
 
 }
+
+#[cfg(test)]
+mod tests {
+    use super::{Fixed, Fixed16};
+    use crate::number::Number;
+
+    /// Scaling by powers of two: exact upward, rounded to nearest downward, saturating at the
+    /// ends (never wrapping), and the exponent of the leading bit.
+    #[test]
+    fn powers_of_two_saturate_and_round() {
+        assert_eq!(Fixed::from_f64(1.5).times_power_of_two(3), Fixed::from_i32(12));
+        assert_eq!(Fixed::from_bits(3).times_power_of_two(-1), Fixed::from_bits(2));
+        assert_eq!(Fixed::from_bits(-3).times_power_of_two(-1), Fixed::from_bits(-1));
+        assert_eq!(Fixed::from_i32(3).times_power_of_two(40), Fixed::MAX);
+        assert_eq!(Fixed::from_i32(-3).times_power_of_two(40), -Fixed::MAX - Fixed::from_bits(1));
+        assert_eq!(Fixed::from_i32(3).times_power_of_two(-200), Fixed::ZERO);
+        assert_eq!(Fixed::ZERO.times_power_of_two(100), Fixed::ZERO);
+        assert_eq!(Fixed16::from_i32(3).times_power_of_two(20), Fixed16::MAX);
+        assert_eq!(Fixed16::from_f64(0.75).times_power_of_two(-1), Fixed16::from_f64(0.375));
+        assert_eq!(Fixed::from_f64(0.75).binary_exponent(), Some(-1));
+        assert_eq!(Fixed::from_bits(1).binary_exponent(), Some(-32));
+        assert_eq!(Fixed::from_f64(-8.0).binary_exponent(), Some(3));
+        assert_eq!(Fixed16::from_f64(1e-4).binary_exponent(), Some(-14));
+        assert_eq!(Fixed16::ZERO.binary_exponent(), None);
+    }
+}
