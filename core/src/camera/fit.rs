@@ -35,8 +35,7 @@ mod tests {
 
     #[test]
     fn wide_display_extends_the_window_horizontally() {
-        let mut scene = SceneDescription::<0>::default();
-        scene.window = Window { x1: -1.0, x2: 1.0, y1: -1.0, y2: 1.0 };
+        let mut scene = SceneDescription::<0> { window: Window { x1: -1.0, x2: 1.0, y1: -1.0, y2: 1.0 }, ..Default::default() };
         scene.fit_to_size(129, 65);
         assert_eq!((scene.viewport.x2, scene.viewport.y2), (128, 64));
         // y spacing 2/64 wins; x extent becomes 128 * 2/64 = 4.
@@ -45,8 +44,7 @@ mod tests {
 
     #[test]
     fn tall_display_extends_vertically_about_the_centre() {
-        let mut scene = SceneDescription::<0>::default();
-        scene.window = Window { x1: 10.0, x2: 14.0, y1: 0.0, y2: 2.0 };
+        let mut scene = SceneDescription::<0> { window: Window { x1: 10.0, x2: 14.0, y1: 0.0, y2: 2.0 }, ..Default::default() };
         scene.fit_to_size(5, 9);
         // x spacing 4/4 = 1 wins over 2/8; y extent 8 about centre 1.
         assert_eq!(scene.window, Window { x1: 10.0, x2: 14.0, y1: -3.0, y2: 5.0 });

@@ -95,10 +95,9 @@ impl Matrix4 {
         inverse[1][2] = (m[0][2] * m[1][0] - m[0][0] * m[1][2]) * r;
         inverse[2][2] = (m[0][0] * m[1][1] - m[0][1] * m[1][0]) * r;
         // Row 3: -t · inverse(3x3).
-        for j in 0..3 {
-            inverse[3][j] = -(m[3][0] * inverse[0][j] + m[3][1] * inverse[1][j] + m[3][2] * inverse[2][j]);
-        }
-        inverse[3][3] = 1.0;
+        let translation: [f64; 3] =
+            core::array::from_fn(|j| -(m[3][0] * inverse[0][j] + m[3][1] * inverse[1][j] + m[3][2] * inverse[2][j]));
+        inverse[3] = [translation[0], translation[1], translation[2], 1.0];
         if inverse.iter().flatten().all(|v| v.is_finite()) {
             Some(Self { rows: inverse })
         } else {

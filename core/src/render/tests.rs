@@ -7,13 +7,15 @@ use crate::scene::{Light, Material, ObjectDescription, Primitive, Projection, Sc
 
 /// A 5x5 image of the unit sphere seen along −z, centre pixel (2, 2) on the sphere's pole.
 fn sphere_scene(material: Material, light: Light) -> SceneDescription<4> {
-    let mut scene = SceneDescription::<4>::default();
-    scene.viewport = Viewport { x1: 0, x2: 4, y1: 0, y2: 4 };
-    scene.window = Window { x1: -2.0, x2: 2.0, y1: -2.0, y2: 2.0 };
-    scene.view_plane = 10.0;
-    scene.projection = Projection::Parallel { direction: [0.0, 0.0, -1.0] };
-    scene.light = light;
-    scene.background = 7;
+    let mut scene = SceneDescription::<4> {
+        viewport: Viewport { x1: 0, x2: 4, y1: 0, y2: 4 },
+        window: Window { x1: -2.0, x2: 2.0, y1: -2.0, y2: 2.0 },
+        view_plane: 10.0,
+        projection: Projection::Parallel { direction: [0.0, 0.0, -1.0] },
+        light,
+        background: 7,
+        ..Default::default()
+    };
     let mut sphere = ObjectDescription::new(Primitive::Sphere, 1);
     sphere.material = material;
     scene.objects.push(sphere).unwrap();

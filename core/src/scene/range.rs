@@ -47,9 +47,9 @@ impl RayOrigins {
     }
 
     fn include(&mut self, point: [f64; 3]) {
-        for axis in 0..3 {
-            self.low[axis] = self.low[axis].min(point[axis]);
-            self.high[axis] = self.high[axis].max(point[axis]);
+        for ((low, high), coordinate) in self.low.iter_mut().zip(&mut self.high).zip(point) {
+            *low = low.min(coordinate);
+            *high = high.max(coordinate);
         }
     }
 

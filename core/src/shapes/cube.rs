@@ -5,8 +5,11 @@ use super::{Hit, ScaledInterval};
 use crate::geometry::{Ray, Vector3};
 use crate::number::Number;
 
+/// A ray parameter where the ray crosses the surface, and the outward normal there.
+type Crossing<N> = (N, Vector3<N>);
+
 /// Entry and exit parameters and the outward normals there, or `None` for a miss.
-fn span<N: Number>(ray: &Ray<N>) -> Option<((N, Vector3<N>), (N, Vector3<N>))> {
+fn span<N: Number>(ray: &Ray<N>) -> Option<(Crossing<N>, Crossing<N>)> {
     let (p, d) = (ray.origin.to_array(), ray.direction.to_array());
     let mut enter = (-N::MAX, Vector3::zero());
     let mut exit = (N::MAX, Vector3::zero());

@@ -46,7 +46,7 @@ fn surfaces<N: Number>(ray: &Ray<N>) -> [Option<(N, Vector3<N>)>; 4] {
 pub fn intersect<N: Number>(ray: &Ray<N>, interval: ScaledInterval<N>) -> Option<Hit<N>> {
     let mut best: Option<Hit<N>> = None;
     for (t, normal) in surfaces(ray).into_iter().flatten() {
-        if interval.contains(t) && best.map_or(true, |hit| t < hit.t) {
+        if interval.contains(t) && best.is_none_or(|hit| t < hit.t) {
             best = Some(Hit { t, normal });
         }
     }
