@@ -44,7 +44,9 @@ fn display() -> Option<(String, Option<Xvfb>)> {
             return Some((display, None));
         }
     }
-    let number = 90 + std::process::id() % 100;
+    // One server per test (tests run in parallel threads of one process).
+    static STARTED: std::sync::atomic::AtomicU32 = std::sync::atomic::AtomicU32::new(0);
+    let number = 100 + (std::process::id() % 100) * 4 + STARTED.fetch_add(1, std::sync::atomic::Ordering::Relaxed) % 4;
     let child = Command::new("Xvfb")
         .args([format!(":{number}"), "-screen".into(), "0".into(), "1024x768x24".into(), "-nolisten".into(), "tcp".into()])
         .stdout(Stdio::null())
@@ -136,6 +138,90 @@ fn window_shows_the_same_image_as_render() {
     check_scene(&binary, &display, "snooker", &[]);
     check_scene(&binary, &display, "lattice", &["--mode", "rgb"]);
     check_scene(&binary, &display, "snooker", &["--number", "f32", "--opt", "none", "--dither", "on"]);
+}
+
+/// Runs `microtrace view SCENE --size 132x120 --screenshot` with `extra` and returns the
+/// screenshot.
+fn screenshot(binary: &Path, display: &str, scene: &str, extra: &[&str]) -> (u32, u32, Vec<[u8; 3]>) {
+    let dir = std::env::temp_dir().join(format!("microtrace-view-{}-{scene}-{}", std::process::id(), extra.join("")));
+    std::fs::create_dir_all(&dir).unwrap();
+    let shot = dir.join("window.png");
+    let output = Command::new(binary)
+        .arg("view")
+        .arg(workspace().join("scenes").join(format!("{scene}.mts")))
+        .args(["--size", "132x120", "--screenshot"])
+        .arg(&shot)
+        .args(extra)
+        .env("DISPLAY", display)
+        .output()
+        .expect("run microtrace view");
+    assert!(output.status.success(), "microtrace view failed: {}", String::from_utf8_lossy(&output.stderr));
+    let image = read_png(&shot);
+    let _ = std::fs::remove_dir_all(&dir);
+    image
+}
+
+/// The overlay changes the image only by outlines (extents in bright object colours, grid
+/// cells in grey) and adds the plan view and depth ranges beside the panel, with a distinct
+/// colour for each of snooker's 21 balls. The Pixelbuffer fill (`--fill`) tints every pixel
+/// that shows a ball and leaves some of the cloth alone.
+fn check_overlay_and_fill(binary: &Path, display: &str) {
+    let (width, height) = (132u32, 120u32);
+    let (window_width, window_height, plain) = screenshot(binary, display, "snooker", &[]);
+    let (overlay_width, overlay_height, overlay) = screenshot(binary, display, "snooker", &["--overlay"]);
+    assert_eq!((window_width, window_height), (overlay_width, overlay_height));
+    let at = |x: u32, y: u32| (y * window_width + x) as usize;
+    let image = |x: u32, y: u32| x < width && y < height;
+    let mut image_changed = 0;
+    let mut beside = std::collections::BTreeSet::new();
+    for y in 0..window_height {
+        for x in 0..window_width {
+            let (before, after) = (plain[at(x, y)], overlay[at(x, y)]);
+            if before == after {
+                continue;
+            }
+            if image(x, y) {
+                image_changed += 1;
+                // An outline: grey grid or a saturated object colour, never a shade of the image.
+                let grey = after == [160, 160, 160];
+                let bright = after.iter().max() == Some(&255);
+                assert!(grey || bright, "overlay pixel ({x}, {y}) is {after:?}, not an outline colour");
+            } else {
+                beside.insert(after);
+            }
+        }
+    }
+    assert!(image_changed > 200, "the overlay drew only {image_changed} pixels on the image");
+    let saturated = beside.iter().filter(|c| c.iter().max() == Some(&255) && c.iter().min() < Some(&100)).count();
+    assert!(saturated >= 21, "beside the panel, {saturated} object colours for 21 balls: the plan view is missing");
+
+    let (_, _, filled) = screenshot(binary, display, "snooker", &["--fill"]);
+    let background = plain[at(0, 0)];
+    let (mut tinted, mut untouched) = (0, 0);
+    for y in 0..height {
+        for x in 0..width {
+            let (before, after) = (plain[at(x, y)], filled[at(x, y)]);
+            if before != background {
+                assert_ne!(before, after, "ball pixel ({x}, {y}) not tinted by the fill");
+            }
+            if before == after { untouched += 1 } else { tinted += 1 }
+        }
+    }
+    assert!(tinted > 0 && untouched > 0, "fill tinted {tinted} pixels, left {untouched}");
+}
+
+#[test]
+fn overlay_draws_extents_grid_and_plan_view_and_fill_tints_the_filled_pixels() {
+    let Some((display, _xvfb)) = display() else {
+        let message = "no X display: set DISPLAY or install Xvfb (Debian: xvfb) to test the simulator window";
+        if std::env::var("CI").is_ok_and(|v| v == "true" || v == "1") {
+            panic!("{message}");
+        }
+        eprintln!("skipped: {message}");
+        return;
+    };
+    let binary = microtrace_binary();
+    check_overlay_and_fill(&binary, &display);
 }
 
 #[test]

@@ -279,17 +279,19 @@ fn draw_finished(
     if settings.fill {
         finished.fill.draw_tint(display);
     }
+    // The plan view and the depth ranges go right of the panel.
+    let left = panel.x + ui::panel::WIDTH as i32;
+    let text = MonoTextStyle::new(&FONT_6X10, EgRgb888::new(230, 230, 230));
     if settings.overlay {
         ui::overlay::draw_grid(&finished.grid, display);
         ui::overlay::draw(&finished.extents, display);
-        // The plan view and the depth ranges, right of the panel.
-        let left = panel.x + ui::panel::WIDTH as i32;
-        let text = MonoTextStyle::new(&FONT_6X10, EgRgb888::new(230, 230, 230));
         let _ = Text::with_baseline("plan x-z from above: volumes", Point::new(left, panel.y), text, Baseline::Top).draw(display);
         let area = Rectangle::new(Point::new(left, PLAN_TOP as i32), Size::new(ui::plan::WIDTH, ui::plan::HEIGHT));
         ui::plan::draw(&finished.plan, display, area);
         let below = Point::new(left, (PLAN_TOP + ui::plan::HEIGHT + 8) as i32);
         ui::depth_ranges::draw(&finished.plan, display, below, ui::plan::WIDTH);
+    } else {
+        let _ = Text::with_baseline("O: overlay, plan view here", Point::new(left, panel.y), text, Baseline::Top).draw(display);
     }
     ui::oled::draw(oled, display, panel + Point::new(1, 1));
     let s = &rendered.statistics;

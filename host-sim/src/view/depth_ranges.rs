@@ -71,3 +71,39 @@ pub fn draw(plan: &PlanView, target: &mut SimulatorDisplay<Rgb888>, origin: Poin
     let end = Point::new(left + length as i32, y + 1);
     let _ = Text::with_text_style(&format!("{high:.0}"), end, axis, TextStyleBuilder::new().alignment(Alignment::Right).baseline(Baseline::Top).build()).draw(target);
 }
+
+#[cfg(test)]
+mod tests {
+    use embedded_graphics::pixelcolor::Rgb888;
+    use embedded_graphics::prelude::*;
+    use embedded_graphics_simulator::SimulatorDisplay;
+
+    use super::super::colours::object_colour;
+    use super::super::plan::PlanView;
+    use super::super::test_scenes::prepared;
+    use super::{draw, height};
+
+    /// One bar per object in its colour, top to bottom in Sortlist's order, left ends in order
+    /// of near bound, all within the chart's height.
+    #[test]
+    fn one_bar_per_object_in_sortlist_order() {
+        for name in ["snooker", "lattice"] {
+            let (_, scene) = prepared(name);
+            let plan = PlanView::of(&*scene);
+            let size = Size::new(256, height(plan.objects.len()));
+            let mut display = SimulatorDisplay::<Rgb888>::new(size + Size::new(0, 40));
+            draw(&plan, &mut display, Point::zero(), size.width);
+            let mut previous = (i32::MIN, i32::MIN);
+            for &object in &plan.order {
+                let colour = object_colour(usize::from(object));
+                let points: Vec<Point> = display.bounding_box().points().filter(|p| display.get_pixel(*p) == colour).collect();
+                assert!(!points.is_empty(), "{name}: no bar for object {object}");
+                let top = points.iter().map(|p| p.y).min().unwrap();
+                let left = points.iter().map(|p| p.x).min().unwrap();
+                assert!(points.iter().all(|p| p.y < size.height as i32), "{name}: bar {object} below the chart");
+                assert!(top > previous.0 && left >= previous.1, "{name}: bar {object} out of order");
+                previous = (top, left);
+            }
+        }
+    }
+}

@@ -64,3 +64,37 @@ impl PixelbufferFill {
         let _ = target.draw_iter(pixels);
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use microtrace::pixel::{FrameBuffer, PixelSource};
+    use microtrace::render::{render_pga, Statistics};
+
+    use super::super::test_scenes::prepared;
+    use super::PixelbufferFill;
+
+    /// With Pixelbuffer on, exactly the marked pixels get a primary ray, and every pixel that
+    /// shows an object is marked.
+    #[test]
+    fn the_recorded_fill_is_what_the_render_traces() {
+        for name in ["snooker", "lattice"] {
+            let (_, scene) = prepared(name);
+            assert!(scene.optimizations.pixelbuffer, "{name} has Pixelbuffer on");
+            let fill = PixelbufferFill::record(&*scene);
+            let (width, height) = (scene.camera.width(), scene.camera.height());
+            let mut buffer = vec![0u8; usize::from(width) * usize::from(height)];
+            let mut frame = FrameBuffer::new(&mut buffer, width, height).unwrap();
+            let mut statistics = Statistics::default();
+            render_pga(&*scene, &mut frame, &mut statistics);
+            assert_eq!(statistics.rays_traced, fill.count() as u64, "{name}");
+            assert!(fill.count() > 0 && fill.count() < usize::from(width) * usize::from(height), "{name}: fill marks some pixels, not all");
+            for y in 0..height {
+                for x in 0..width {
+                    if frame.get_pixel(x, y) != Some(scene.background) {
+                        assert!(fill.is_marked(x, y), "{name}: object pixel ({x}, {y}) not marked");
+                    }
+                }
+            }
+        }
+    }
+}

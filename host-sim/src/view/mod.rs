@@ -10,3 +10,6 @@ pub mod panel;
 pub mod plan;
 pub mod sink;
 pub mod window;
+
+#[cfg(test)]
+mod test_scenes;

@@ -179,3 +179,77 @@ fn draw_rays<D: DrawTarget<Color = Rgb888>>(plan: &PlanView, mapping: &Mapping, 
     // The view plane's window itself.
     let _ = Line::new(mapping.at(window[0]), mapping.at(window[1])).into_styled(PrimitiveStyle::with_stroke(Rgb888::new(200, 200, 200), 1)).draw(target);
 }
+
+#[cfg(test)]
+mod tests {
+    use embedded_graphics::pixelcolor::Rgb888;
+    use embedded_graphics::prelude::*;
+    use embedded_graphics::primitives::Rectangle;
+    use embedded_graphics_simulator::SimulatorDisplay;
+
+    use super::super::colours::object_colour;
+    use super::super::test_scenes::prepared;
+    use super::{draw, PlanView, Rays};
+
+    fn inside(polygon: &[[f64; 2]], point: [f64; 2]) -> bool {
+        let cross = |a: [f64; 2], b: [f64; 2]| (b[0] - a[0]) * (point[1] - a[1]) - (b[1] - a[1]) * (point[0] - a[0]);
+        let signs: Vec<f64> = (0..polygon.len()).map(|i| cross(polygon[i], polygon[(i + 1) % polygon.len()])).collect();
+        signs.iter().all(|s| *s >= 0.0) || signs.iter().all(|s| *s <= 0.0)
+    }
+
+    /// Each snooker ball's footprint is its bounding box from above (a square around its
+    /// centre, as wide as the ball), and its depth range holds the ball's nearest and farthest
+    /// points from the eye; Sortlist's order is by near bound.
+    #[test]
+    fn snooker_footprints_and_depth_ranges_bound_the_balls() {
+        let (description, scene) = prepared("snooker");
+        let plan = PlanView::of(&*scene);
+        assert_eq!(plan.objects.len(), 21);
+        let Rays::Perspective { eye } = plan.rays else { panic!("snooker is a perspective view") };
+        assert_eq!(eye, [0.0, 1380.0]);
+        for (object, description) in plan.objects.iter().zip(&description.objects) {
+            let rows = &description.world_from_object.rows;
+            let centre = [rows[3][0], rows[3][1], rows[3][2]];
+            let radius = (rows[0][0] * rows[0][0] + rows[0][1] * rows[0][1] + rows[0][2] * rows[0][2]).sqrt();
+            assert_eq!(object.footprint.len(), 4, "object {}: a box seen from above", object.object);
+            assert!(inside(&object.footprint, [centre[0], centre[2]]), "object {}", object.object);
+            let xs = object.footprint.iter().map(|p| p[0]);
+            let width = xs.clone().fold(f64::NEG_INFINITY, f64::max) - xs.fold(f64::INFINITY, f64::min);
+            assert!((width - 2.0 * radius).abs() < 1e-6 * radius, "object {}: footprint {width} wide", object.object);
+            let eye3 = [0.0, 220.0, 1380.0];
+            let distance = (0..3).map(|k| (centre[k] - eye3[k]).powi(2)).sum::<f64>().sqrt();
+            let (near, far) = object.depth.expect("a depth range");
+            assert!(near <= distance - radius && far >= distance + radius, "object {}: {near}..{far} vs {distance}±{radius}", object.object);
+            assert!(near > distance - radius - 2e-3 * distance && far < distance + 2.0 * radius, "object {}: range too loose: {near}..{far} vs {distance}±{radius}", object.object);
+        }
+        let nears: Vec<f64> = plan.order.iter().map(|&o| plan.objects[usize::from(o)].depth.unwrap().0).collect();
+        assert!(nears.windows(2).all(|pair| pair[0] <= pair[1]), "Sortlist order by near bound: {nears:?}");
+    }
+
+    /// Every object of the lattice shows in the plan in its own colour (unless a later object
+    /// has the same footprint: the three tiers lie exactly above each other, as the thesis
+    /// notes for figure 4.15b), and nothing is drawn outside the plan's area.
+    #[test]
+    fn the_plan_draws_every_object_within_its_area() {
+        let (_, scene) = prepared("lattice");
+        let plan = PlanView::of(&*scene);
+        let mut display = SimulatorDisplay::<Rgb888>::new(Size::new(300, 260));
+        let area = Rectangle::new(Point::new(20, 10), Size::new(super::WIDTH, super::HEIGHT));
+        draw(&plan, &mut display, area);
+        let lit = |point: Point| display.get_pixel(point) != Rgb888::BLACK;
+        let outside = display.bounding_box().points().filter(|p| !area.contains(*p)).filter(|p| lit(*p)).count();
+        assert_eq!(outside, 0, "pixels drawn outside the plan's area");
+        let same = |a: &[[f64; 2]], b: &[[f64; 2]]| a.len() == b.len() && a.iter().zip(b).all(|(p, q)| (p[0] - q[0]).abs() + (p[1] - q[1]).abs() < 1e-6);
+        let mut seen = 0;
+        for (object, drawn) in plan.objects.iter().enumerate() {
+            if plan.objects[object + 1..].iter().any(|later| same(&later.footprint, &drawn.footprint)) {
+                continue;
+            }
+            let colour = object_colour(object);
+            assert!(area.points().any(|p| display.get_pixel(p) == colour), "object {object}'s colour is not in the plan");
+            seen += 1;
+        }
+        // 9 spheres and 9 rods along y seen from above, 3 rods each along x and along z.
+        assert_eq!(seen, 24, "objects with a footprint of their own");
+    }
+}
