@@ -55,6 +55,25 @@ impl Board {
     }
 }
 
+/// Which primitives' intersection code the firmware links.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Primitives {
+    /// Only those the scene uses (the default).
+    Scene,
+    /// All four, whatever the scene uses (for comparing footprints).
+    All,
+}
+
+impl Primitives {
+    /// The name in reports: `scene` or `all`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Primitives::Scene => "scene",
+            Primitives::All => "all",
+        }
+    }
+}
+
 #[derive(Clone, Debug)]
 pub struct FirmwareOptions {
     pub scene: PathBuf,
@@ -63,6 +82,7 @@ pub struct FirmwareOptions {
     pub board: Board,
     /// `scene` (keep the scene's `optimize`), `all`, `none`, or a comma list.
     pub optimizations: String,
+    pub primitives: Primitives,
     pub out: PathBuf,
     pub timeout: Duration,
 }
@@ -74,6 +94,7 @@ impl FirmwareOptions {
             number: number.to_owned(),
             board,
             optimizations: "scene".to_owned(),
+            primitives: Primitives::Scene,
             out: out.into(),
             timeout: Duration::from_secs(300),
         }
@@ -104,7 +125,10 @@ pub fn run(options: &FirmwareOptions) -> Result<FirmwareRun, String> {
         .scene
         .canonicalize()
         .map_err(|error| format!("scene {}: {error}", options.scene.display()))?;
-    let features = primitive_features(&scene)?;
+    let features = match options.primitives {
+        Primitives::Scene => primitive_features(&scene)?,
+        Primitives::All => Primitive::ALL.into_iter().map(Primitive::name).collect(),
+    };
     setup::ensure_tools(options.board.rust_target())?;
 
     std::fs::create_dir_all(&options.out).map_err(|error| format!("{}: {error}", options.out.display()))?;
@@ -152,6 +176,7 @@ pub fn run(options: &FirmwareOptions) -> Result<FirmwareRun, String> {
     names.insert("number", options.number.clone());
     names.insert("scene", scene.file_name().map(|name| name.to_string_lossy().into_owned()).unwrap_or_default());
     names.insert("optimizations", options.optimizations.clone());
+    names.insert("primitives", options.primitives.name().to_owned());
     let report_json = out.join("report.json");
     std::fs::write(&report_json, json(&names, &integers)).map_err(|error| format!("{}: {error}", report_json.display()))?;
     let _ = std::fs::remove_file(out.join("report.txt"));

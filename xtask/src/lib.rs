@@ -1,13 +1,17 @@
 //! Project tasks, as a library so that the integration tests can drive them too:
 //! - [`firmware::run`]: build the firmware for a scene, run it under QEMU, collect
 //!   `framebuffer.bin`, `oled.png` and `report.json` (`cargo xtask firmware`);
-//! - [`example::build`]: build the real-board example (`cargo xtask firmware-example`).
+//! - [`example::build`]: build the real-board example (`cargo xtask firmware-example`);
+//! - [`report::run`]: every thesis scene, number type and board, into README.md's table and
+//!   `docs/firmware-report.json` (`cargo xtask firmware-report`).
 
+pub mod budget;
 pub mod elf;
 pub mod example;
 pub mod firmware;
 pub mod oled;
 pub mod qemu;
+pub mod report;
 pub mod setup;
 
 use std::path::{Path, PathBuf};

@@ -14,13 +14,17 @@ fn usage() -> &'static str {
       leaves framebuffer.bin, oled.png (lm3s6965evb) and report.json in DIR
       (default firmware/target/run/BOARD-SCENE-NUMBER).
   cargo xtask firmware-example
-      Builds (does not run) the real-board example in firmware/examples/."
+      Builds (does not run) the real-board example in firmware/examples/.
+  cargo xtask firmware-report
+      Runs both thesis scenes at 128x64 in every number type on both boards (and all-primitives
+      builds), writes the table into README.md and docs/firmware-report.json (several minutes)."
 }
 
 fn main() {
     let arguments: Vec<String> = std::env::args().skip(1).collect();
     let result = match arguments.first().map(String::as_str) {
         Some("firmware") => firmware_task(&arguments[1..]),
+        Some("firmware-report") => xtask::report::run().map(|runs| println!("{} runs", runs.len())),
         Some("firmware-example") => xtask::example::build().map(|path| println!("built {}", path.display())),
         _ => Err(usage().to_owned()),
     };

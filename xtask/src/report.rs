@@ -1,0 +1,279 @@
+//! `cargo xtask firmware-report`: the firmware's cost and footprint for both thesis scenes at
+//! 128x64, every number type and both boards, plus all-primitives builds to set against the
+//! scene-only ones. Writes the Markdown table into the root README.md (between
+//! [`START_MARKER`] and [`END_MARKER`]) and `docs/firmware-report.json`, which
+//! `microtrace bench --numbers` reads.
+
+use std::path::PathBuf;
+
+use crate::budget;
+use crate::firmware::{self, Board, FirmwareOptions, Primitives, NUMBERS};
+
+pub const START_MARKER: &str = "<!-- firmware-report:start -->";
+pub const END_MARKER: &str = "<!-- firmware-report:end -->";
+/// The section the markers go in when README.md has none yet.
+const SECTION_HEADING: &str = "## The firmware: cost and footprint";
+
+const SCENES: [&str; 2] = ["scenes/snooker.mts", "scenes/lattice.mts"];
+/// The all-primitives builds are compared in this number type only: code size, not arithmetic.
+const ALL_PRIMITIVES_NUMBER: &str = "f32";
+
+/// One firmware run, as `docs/firmware-report.json` holds it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ReportRun {
+    /// The scene file's stem (`snooker`).
+    pub scene: String,
+    pub board: Board,
+    pub number: String,
+    pub primitives: Primitives,
+    pub width: u64,
+    pub height: u64,
+    pub instructions: u64,
+    pub pixels: u64,
+    pub instructions_per_pixel: u64,
+    pub flash_bytes: u64,
+    pub static_ram_bytes: u64,
+    pub stack_peak_bytes: u64,
+}
+
+/// What to run: every scene x board x number with the scene's primitives, then every scene x
+/// board with all four primitives.
+fn plan() -> Vec<(PathBuf, Board, &'static str, Primitives)> {
+    let root = crate::repository_root();
+    let mut plan = Vec::new();
+    for scene in SCENES {
+        for board in Board::ALL {
+            for number in NUMBERS {
+                plan.push((root.join(scene), board, number, Primitives::Scene));
+            }
+        }
+    }
+    for scene in SCENES {
+        for board in Board::ALL {
+            plan.push((root.join(scene), board, ALL_PRIMITIVES_NUMBER, Primitives::All));
+        }
+    }
+    plan
+}
+
+/// Runs everything (printing progress), then writes README.md's table and the JSON.
+pub fn run() -> Result<Vec<ReportRun>, String> {
+    let plan = plan();
+    let mut runs = Vec::with_capacity(plan.len());
+    let started = std::time::Instant::now();
+    for (index, (scene, board, number, primitives)) in plan.iter().enumerate() {
+        let stem = scene.file_stem().map(|stem| stem.to_string_lossy().into_owned()).unwrap_or_default();
+        let label = format!("{stem} {} {number} primitives={}", board.name(), primitives.name());
+        println!("[{}/{}] {label} ...", index + 1, plan.len());
+        let out = crate::firmware_dir()
+            .join("target/report")
+            .join(format!("{}-{stem}-{number}-{}", board.name(), primitives.name()));
+        let mut options = FirmwareOptions::new(scene, *board, number, out);
+        options.primitives = *primitives;
+        let result = firmware::run(&options).map_err(|error| format!("{label}: {error}"))?;
+        let get = |key: &str| result.numbers.get(key).copied().ok_or_else(|| format!("{label}: the report lacks `{key}`"));
+        let run = ReportRun {
+            scene: stem,
+            board: *board,
+            number: (*number).to_owned(),
+            primitives: *primitives,
+            width: get("width")?,
+            height: get("height")?,
+            instructions: get("instructions")?,
+            pixels: get("pixels")?,
+            instructions_per_pixel: get("instructions_per_pixel")?,
+            flash_bytes: get("flash_bytes")?,
+            static_ram_bytes: get("static_ram_bytes")?,
+            stack_peak_bytes: get("stack_peak_bytes")?,
+        };
+        println!(
+            "    {} instructions per pixel, flash {} B, static RAM {} B, peak stack {} B ({:.0} s so far)",
+            run.instructions_per_pixel,
+            run.flash_bytes,
+            run.static_ram_bytes,
+            run.stack_peak_bytes,
+            started.elapsed().as_secs_f64()
+        );
+        runs.push(run);
+    }
+
+    let root = crate::repository_root();
+    let json_path = root.join("docs/firmware-report.json");
+    std::fs::write(&json_path, json(&runs)).map_err(|error| format!("{}: {error}", json_path.display()))?;
+    println!("wrote {}", json_path.display());
+    let readme_path = root.join("README.md");
+    let readme = std::fs::read_to_string(&readme_path).map_err(|error| format!("{}: {error}", readme_path.display()))?;
+    let updated = replace_between_markers(&readme, &markdown(&runs))?;
+    std::fs::write(&readme_path, updated).map_err(|error| format!("{}: {error}", readme_path.display()))?;
+    println!("wrote the table into {}", readme_path.display());
+    Ok(runs)
+}
+
+/// `{"runs":[{...}, ...]}`, one run a line, keys in a fixed order.
+pub fn json(runs: &[ReportRun]) -> String {
+    let lines: Vec<String> = runs
+        .iter()
+        .map(|run| {
+            format!(
+                "{{\"scene\":\"{}\",\"board\":\"{}\",\"number\":\"{}\",\"primitives\":\"{}\",\"width\":{},\"height\":{},\
+                 \"instructions\":{},\"pixels\":{},\"instructions_per_pixel\":{},\"flash_bytes\":{},\
+                 \"static_ram_bytes\":{},\"stack_peak_bytes\":{}}}",
+                run.scene,
+                run.board.name(),
+                run.number,
+                run.primitives.name(),
+                run.width,
+                run.height,
+                run.instructions,
+                run.pixels,
+                run.instructions_per_pixel,
+                run.flash_bytes,
+                run.static_ram_bytes,
+                run.stack_peak_bytes
+            )
+        })
+        .collect();
+    format!("{{\"runs\":[\n{}\n]}}\n", lines.join(",\n"))
+}
+
+/// The text between the markers: the main table, then scene-only against all primitives.
+pub fn markdown(runs: &[ReportRun]) -> String {
+    let mut text = String::new();
+    text += "Generated by `cargo xtask firmware-report` (the same figures are in\n\
+             `docs/firmware-report.json`): each thesis scene rendered at 128x64 by the firmware under QEMU,\n\
+             with the scene's own `optimize` and only the primitives it uses.\n\
+             **Instructions are not cycles**: QEMU counts executed instructions (a TCG plugin, between\n\
+             markers around the render), so a divide, a load or a taken branch each count as one, and flash\n\
+             wait states are not modelled. The lm3s6965evb (Cortex-M3) has no FPU: `f32` and `f64` are\n\
+             software floating point there; the mps2-an386 (Cortex-M4F) runs `f32` in hardware. Flash is\n\
+             text + data; static RAM is data + bss (the framebuffer, the OLED's copy on the lm3s6965evb, and\n\
+             the prepared scene with its acceleration structures).\n\n";
+    text += &format!(
+        "Budget on the lm3s6965evb (64 KB RAM, 256 KB flash) for both scenes in `f32`, asserted by\n\
+         `tests/tests/firmware_qemu.rs`: flash at most {} KB, static RAM at most {} KB, peak stack at most\n\
+         {} KB, so at least {} KB of the RAM stays free (see\n\
+         [firmware/README.md](firmware/README.md#memory-budget)).\n\n",
+        budget::FLASH_BYTES / 1024,
+        budget::STATIC_RAM_BYTES / 1024,
+        budget::STACK_BYTES / 1024,
+        budget::FREE_RAM_BYTES / 1024
+    );
+    text += "| scene | board | number | instructions per pixel | instructions | flash bytes | static RAM bytes | peak stack bytes |\n";
+    text += "|---|---|---|---:|---:|---:|---:|---:|\n";
+    for run in runs.iter().filter(|run| run.primitives == Primitives::Scene) {
+        text += &format!(
+            "| {} | {} | {} | {} | {} | {} | {} | {} |\n",
+            run.scene,
+            run.board.name(),
+            run.number,
+            thousands(run.instructions_per_pixel),
+            thousands(run.instructions),
+            thousands(run.flash_bytes),
+            thousands(run.static_ram_bytes),
+            thousands(run.stack_peak_bytes)
+        );
+    }
+    text += &format!(
+        "\nOnly the scene's primitives against all four (`{ALL_PRIMITIVES_NUMBER}`): snooker uses only spheres, \
+         the lattice spheres and cylinders.\n\n"
+    );
+    text += "| scene | board | flash, scene's primitives | flash, all four | static RAM, scene's primitives | static RAM, all four |\n";
+    text += "|---|---|---:|---:|---:|---:|\n";
+    for all in runs.iter().filter(|run| run.primitives == Primitives::All) {
+        let Some(own) = runs.iter().find(|run| {
+            run.primitives == Primitives::Scene && run.scene == all.scene && run.board == all.board && run.number == all.number
+        }) else {
+            continue;
+        };
+        text += &format!(
+            "| {} | {} | {} | {} | {} | {} |\n",
+            all.scene,
+            all.board.name(),
+            thousands(own.flash_bytes),
+            thousands(all.flash_bytes),
+            thousands(own.static_ram_bytes),
+            thousands(all.static_ram_bytes)
+        );
+    }
+    text
+}
+
+/// README.md with `table` between the markers; the markers (in a section of their own) are
+/// appended when absent.
+pub fn replace_between_markers(readme: &str, table: &str) -> Result<String, String> {
+    match (readme.find(START_MARKER), readme.find(END_MARKER)) {
+        (Some(start), Some(end)) if start < end => {
+            let before = &readme[..start + START_MARKER.len()];
+            let after = &readme[end..];
+            Ok(format!("{before}\n{table}{after}"))
+        }
+        (None, None) => {
+            let separator = if readme.ends_with('\n') { "\n" } else { "\n\n" };
+            Ok(format!("{readme}{separator}{SECTION_HEADING}\n\n{START_MARKER}\n{table}{END_MARKER}\n"))
+        }
+        _ => Err(format!("README.md: `{START_MARKER}` must come once, before `{END_MARKER}`")),
+    }
+}
+
+/// 1234567 -> "1,234,567".
+fn thousands(value: u64) -> String {
+    let digits = value.to_string();
+    let mut out = String::new();
+    for (index, digit) in digits.chars().enumerate() {
+        if index > 0 && (digits.len() - index).is_multiple_of(3) {
+            out.push(',');
+        }
+        out.push(digit);
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn thousands_groups_digits() {
+        assert_eq!(thousands(0), "0");
+        assert_eq!(thousands(999), "999");
+        assert_eq!(thousands(1000), "1,000");
+        assert_eq!(thousands(1234567), "1,234,567");
+    }
+
+    #[test]
+    fn the_table_replaces_only_what_is_between_the_markers() {
+        let readme = format!("intro\n{START_MARKER}\nold table\n{END_MARKER}\nrest\n");
+        let updated = replace_between_markers(&readme, "new table\n").unwrap();
+        assert_eq!(updated, format!("intro\n{START_MARKER}\nnew table\n{END_MARKER}\nrest\n"));
+    }
+
+    #[test]
+    fn markers_are_added_in_their_section_when_absent() {
+        let updated = replace_between_markers("intro\n", "table\n").unwrap();
+        assert_eq!(updated, format!("intro\n\n{SECTION_HEADING}\n\n{START_MARKER}\ntable\n{END_MARKER}\n"));
+    }
+
+    #[test]
+    fn the_json_has_the_shape_bench_reads() {
+        let run = ReportRun {
+            scene: "snooker".into(),
+            board: Board::Lm3s6965evb,
+            number: "f32".into(),
+            primitives: Primitives::Scene,
+            width: 128,
+            height: 64,
+            instructions: 8192,
+            pixels: 8192,
+            instructions_per_pixel: 1,
+            flash_bytes: 2,
+            static_ram_bytes: 3,
+            stack_peak_bytes: 4,
+        };
+        assert_eq!(
+            json(&[run]),
+            "{\"runs\":[\n{\"scene\":\"snooker\",\"board\":\"lm3s6965evb\",\"number\":\"f32\",\"primitives\":\"scene\",\
+             \"width\":128,\"height\":64,\"instructions\":8192,\"pixels\":8192,\"instructions_per_pixel\":1,\
+             \"flash_bytes\":2,\"static_ram_bytes\":3,\"stack_peak_bytes\":4}\n]}\n"
+        );
+    }
+}
