@@ -87,6 +87,27 @@ struct Measured {
     median: Option<Duration>,
 }
 
+/// A hard-case file that could not be read: reported, not rendered.
+struct UnreadableScene {
+    stem: String,
+    error: String,
+}
+
+/// Where the Cortex-M figures come from, and why they could not be used if so.
+struct FirmwareSource {
+    figures: FirmwareFigures,
+    path: PathBuf,
+    problem: Option<String>,
+}
+
+/// f32's instructions per pixel on Cortex-M3 over another type's.
+#[derive(Clone, Copy)]
+struct InstructionRatio {
+    f32: u64,
+    other: u64,
+    ratio: f64,
+}
+
 struct CaseResult {
     case: Case,
     rounds: usize,
@@ -107,11 +128,11 @@ pub fn run(args: &super::BenchArgs) -> anyhow::Result<()> {
     let report_path = args.out.clone().unwrap_or_else(|| PathBuf::from(DEFAULT_REPORT));
     let plot_path = args.plot.clone().unwrap_or_else(|| PathBuf::from(DEFAULT_PLOT));
     let firmware_path = args.firmware_report.clone().unwrap_or_else(|| PathBuf::from(DEFAULT_FIRMWARE_REPORT));
-    let (firmware, firmware_problem) = match FirmwareFigures::read(&firmware_path) {
-        Ok(figures) => (figures, None),
+    let firmware = match FirmwareFigures::read(&firmware_path) {
+        Ok(figures) => FirmwareSource { figures, path: firmware_path, problem: None },
         Err(problem) => {
             eprintln!("warning: firmware figures not used: {problem}");
-            (FirmwareFigures::default(), Some(problem))
+            FirmwareSource { figures: FirmwareFigures::default(), path: firmware_path, problem: Some(problem) }
         }
     };
     let (cases, unreadable) = cases(&args.scenes)?;
@@ -122,7 +143,7 @@ pub fn run(args: &super::BenchArgs) -> anyhow::Result<()> {
     }
     let plot_points = plot_points(&results);
     let mut report = String::new();
-    write_report(&mut report, &results, &unreadable, &firmware, firmware_problem.as_deref(), &firmware_path, &report_path, &plot_path)?;
+    write_report(&mut report, &results, &unreadable, &firmware, &report_path, &plot_path)?;
     if let Ok(existing) = std::fs::read_to_string(&report_path) {
         if let Some(at) = existing.find(HAND_WRITTEN_HEADING) {
             report.push('\n');
@@ -142,7 +163,7 @@ pub fn run(args: &super::BenchArgs) -> anyhow::Result<()> {
 
 /// The thesis scenes at both sizes, then every `.mts` in `scenes/hard/` (sorted) at its own
 /// size. Hard scenes that cannot be read are returned with their error, to be reported.
-fn cases(scenes: &Path) -> anyhow::Result<(Vec<Case>, Vec<(String, String)>)> {
+fn cases(scenes: &Path) -> anyhow::Result<(Vec<Case>, Vec<UnreadableScene>)> {
     let mut cases = Vec::new();
     for (group, resize) in [(GROUP_FULL, false), (GROUP_SMALL, true)] {
         for file in THESIS_SCENES {
@@ -175,7 +196,7 @@ fn cases(scenes: &Path) -> anyhow::Result<(Vec<Case>, Vec<(String, String)>)> {
             Ok(scene) => cases.push(Case { group: GROUP_HARD, stem: stem_of(&path), scene }),
             Err(error) => {
                 eprintln!("warning: {error:#}");
-                unreadable.push((stem_of(&path), format!("{error:#}")));
+                unreadable.push(UnreadableScene { stem: stem_of(&path), error: format!("{error:#}") });
             }
         }
     }
@@ -308,14 +329,11 @@ fn verdict(met: Option<bool>) -> &'static str {
     }
 }
 
-#[allow(clippy::too_many_arguments)]
 fn write_report(
     report: &mut String,
     results: &[CaseResult],
-    unreadable: &[(String, String)],
-    firmware: &FirmwareFigures,
-    firmware_problem: Option<&str>,
-    firmware_path: &Path,
+    unreadable: &[UnreadableScene],
+    firmware: &FirmwareSource,
     report_path: &Path,
     plot_path: &Path,
 ) -> anyhow::Result<()> {
@@ -328,9 +346,9 @@ fn write_report(
         std::env::consts::ARCH,
         std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1)
     )?;
-    write_summary(report, results, firmware, firmware_path)?;
+    write_summary(report, results, firmware)?;
     write_number_types(report)?;
-    write_method(report, results, firmware_path)?;
+    write_method(report, results, &firmware.path)?;
     writeln!(report, "## Speed against error\n")?;
     writeln!(report, "![speed against error]({})\n", relative_link(report_path, plot_path))?;
     writeln!(
@@ -341,20 +359,21 @@ fn write_report(
          out of that type's point.\n"
     )?;
     for group in GROUPS {
-        write_group_table(report, results, group, firmware)?;
+        write_group_table(report, results, group, &firmware.figures)?;
     }
     if !unreadable.is_empty() {
         writeln!(report, "Hard-case files that could not be read (not rendered):\n")?;
-        for (stem, error) in unreadable {
-            writeln!(report, "- `{stem}`: {}", one_line(error))?;
+        for scene in unreadable {
+            writeln!(report, "- `{}`: {}", scene.stem, one_line(&scene.error))?;
         }
         writeln!(report)?;
     }
-    write_firmware_source(report, firmware, firmware_problem, firmware_path)?;
+    write_firmware_source(report, firmware)?;
     Ok(())
 }
 
-fn write_summary(report: &mut String, results: &[CaseResult], firmware: &FirmwareFigures, firmware_path: &Path) -> anyhow::Result<()> {
+fn write_summary(report: &mut String, results: &[CaseResult], firmware: &FirmwareSource) -> anyhow::Result<()> {
+    let firmware_path = &firmware.path;
     writeln!(report, "## Summary: the targets of issue 4\n")?;
     writeln!(report, "| target | measured | verdict |\n|---|---|---|")?;
     let thesis: Vec<&CaseResult> = results.iter().filter(|r| r.case.group != GROUP_HARD).collect();
@@ -399,21 +418,21 @@ fn write_summary(report: &mut String, results: &[CaseResult], firmware: &Firmwar
         verdict(all_met(&f32, &|d| d.percent_identical() >= F32_IDENTICAL_PERCENT))
     )?;
     let stems: Vec<&str> = THESIS_SCENES.iter().map(|file| file.trim_end_matches(".mts")).collect();
-    let ratio = |stem: &str, number: &str| -> Option<(u64, u64, f64)> {
-        let f32 = firmware.instructions_per_pixel(stem, CORTEX_M3_BOARD, "f32")?;
-        let other = firmware.instructions_per_pixel(stem, CORTEX_M3_BOARD, number)?;
-        Some((f32, other, f32 as f64 / other.max(1) as f64))
+    let ratio = |stem: &str, number: &str| -> Option<InstructionRatio> {
+        let f32 = firmware.figures.instructions_per_pixel(stem, CORTEX_M3_BOARD, "f32")?;
+        let other = firmware.figures.instructions_per_pixel(stem, CORTEX_M3_BOARD, number)?;
+        Some(InstructionRatio { f32, other, ratio: f32 as f64 / other.max(1) as f64 })
     };
-    let speedups: Vec<(&str, Option<(u64, u64, f64)>)> = stems.iter().map(|stem| (*stem, ratio(stem, "fixed"))).collect();
+    let speedups: Vec<(&str, Option<InstructionRatio>)> = stems.iter().map(|stem| (*stem, ratio(stem, "fixed"))).collect();
     let measured = speedups
         .iter()
         .map(|(stem, r)| match r {
-            Some((f32, fixed, ratio)) => format!("{stem}: f32 {f32} / fixed {fixed} = {ratio:.2}x"),
+            Some(r) => format!("{stem}: f32 {} / fixed {} = {:.2}x", r.f32, r.other, r.ratio),
             None => format!("{stem}: no entry in {}", firmware_path.display()),
         })
         .collect::<Vec<_>>()
         .join("; ");
-    let speedup_met = speedups.iter().map(|(_, r)| r.map(|(_, _, ratio)| ratio >= CORTEX_M3_FIXED_SPEEDUP)).collect::<Option<Vec<bool>>>();
+    let speedup_met = speedups.iter().map(|(_, r)| r.map(|r| r.ratio >= CORTEX_M3_FIXED_SPEEDUP)).collect::<Option<Vec<bool>>>();
     let speedup_met = speedup_met.map(|v| v.iter().all(|ok| *ok));
     writeln!(
         report,
@@ -426,7 +445,7 @@ fn write_summary(report: &mut String, results: &[CaseResult], firmware: &Firmwar
     let fixed16 = differences(NumberType::Fixed16);
     let fixed16_speedups: Vec<String> = stems
         .iter()
-        .filter_map(|stem| ratio(stem, "fixed16").map(|(_, _, r)| format!("{stem} {r:.2}x")))
+        .filter_map(|stem| ratio(stem, "fixed16").map(|r| format!("{stem} {:.2}x", r.ratio)))
         .collect();
     if speedup_met == Some(false) {
         writeln!(
@@ -638,23 +657,18 @@ fn write_group_table(report: &mut String, results: &[CaseResult], group: &str, f
     Ok(())
 }
 
-fn write_firmware_source(
-    report: &mut String,
-    firmware: &FirmwareFigures,
-    firmware_problem: Option<&str>,
-    firmware_path: &Path,
-) -> anyhow::Result<()> {
+fn write_firmware_source(report: &mut String, firmware: &FirmwareSource) -> anyhow::Result<()> {
     writeln!(report, "## Where the Cortex-M figures come from\n")?;
     let source = format!(
         "Instructions per pixel are read from `{}`, which `cargo xtask firmware-report` writes: each thesis scene \
          rendered at 128x64 by the firmware under QEMU with an instruction-counting plugin, Cortex-M3 on the \
          {CORTEX_M3_BOARD} board (no FPU: f32 in software) and Cortex-M4F on {CORTEX_M4F_BOARD} (single-precision FPU). \
          They are instructions, not cycles.",
-        firmware_path.display()
+        firmware.path.display()
     );
-    match firmware_problem {
+    match &firmware.problem {
         Some(problem) => writeln!(report, "{source} This run could not use it: {}.\n", one_line(problem))?,
-        None if firmware.is_empty() => writeln!(report, "{source} It did not exist when this report was made, so those columns are empty.\n")?,
+        None if firmware.figures.is_empty() => writeln!(report, "{source} It did not exist when this report was made, so those columns are empty.\n")?,
         None => writeln!(report, "{source}\n")?,
     }
     Ok(())
