@@ -40,14 +40,13 @@ impl<N: Number> Vector3<N> {
         N::length3(self.to_array())
     }
 
-    /// The unit vector in the same direction, or `None` for the zero vector. The vector is
-    /// first scaled by a power of two to a largest component in [1, 2): exact in floating point
-    /// (the result is unchanged), and in fixed point it keeps a short vector (the world normal
+    /// The unit vector in the same direction, or `None` for the zero vector. In fixed point the
+    /// vector is first scaled by a power of two to a largest component in [1, 2) (in floating
+    /// point that would change nothing): it keeps a short vector (the world normal
     /// of a large object has components of about one over its size) from losing the
     /// significant bits of its squares (a Q32.32 normal was 8·10⁻⁴ too long at size 4000).
     pub fn normalized(self) -> Option<Self> {
-        let exponent = self.largest_component().binary_exponent()?;
-        let scaled = self.times_power_of_two(-exponent);
+        let scaled = if N::FLOATING_POINT { self } else { self.times_power_of_two(-self.largest_component().binary_exponent()?) };
         let reciprocal = N::ONE.checked_div(scaled.length())?;
         Some(scaled * reciprocal)
     }

@@ -64,6 +64,8 @@ impl Neg for F32Micro {
 impl Number for F32Micro {
     const NAME: &'static str = "f32-micromath";
     const SCENE_LIMIT: f64 = <f32 as Number>::SCENE_LIMIT;
+    // The bit-trick square root scales exactly by even powers of two, like a correctly rounded one.
+    const FLOATING_POINT: bool = true;
     const ZERO: Self = Self(0.0);
     const ONE: Self = Self(1.0);
     const MAX: Self = Self(f32::MAX);

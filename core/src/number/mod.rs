@@ -106,6 +106,10 @@ pub trait Number:
         Self::dot3(v, v).sqrt()
     }
 
+    /// Whether the type is floating point: its precision is relative, so scaling by a power of
+    /// two changes no result, and the rescaling that keeps fixed point precise can be skipped.
+    const FLOATING_POINT: bool;
+
     /// `self·2^exponent`: exact in floating point (away from overflow and underflow); in fixed
     /// point exact for positive exponents (saturating) and rounded to nearest for negative ones.
     fn times_power_of_two(self, exponent: i32) -> Self;

@@ -49,7 +49,11 @@ pub struct ScaledInterval<N> {
 impl<N: Number> ScaledInterval<N> {
     /// A parameter along the scaled ray as a parameter along the original ray.
     pub fn unscale(&self, t: N) -> N {
-        t.times_power_of_two(self.exponent)
+        if self.exponent == 0 {
+            t
+        } else {
+            t.times_power_of_two(self.exponent)
+        }
     }
 
     pub fn contains(&self, t: N) -> bool {

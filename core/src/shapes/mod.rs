@@ -101,9 +101,12 @@ impl Primitive {
 /// [1, 2), and the interval that converts parameters back. Object-space directions have
 /// components of about one over the object's size; in fixed point their squares (the
 /// quadratics' A) keep few significant bits for large objects (a cone 7000 units across missed
-/// by hundreds of units in Q32.32). A power of two is exact in floating point, so float
-/// results are unchanged.
+/// by hundreds of units in Q32.32). A power of two would change no floating-point result, so
+/// floats skip it.
 fn scaled_to_unit<N: Number>(ray: &Ray<N>, interval: Interval<N>) -> (Ray<N>, ScaledInterval<N>) {
+    if N::FLOATING_POINT {
+        return (*ray, ScaledInterval { interval, exponent: 0 });
+    }
     let exponent = ray.direction.largest_component().binary_exponent().unwrap_or(0);
     let scaled = Ray { origin: ray.origin, direction: ray.direction.times_power_of_two(-exponent) };
     (scaled, ScaledInterval { interval, exponent: -exponent })
