@@ -27,7 +27,10 @@ impl FirmwareFigures {
     }
 
     /// Parses `{"runs": [{"scene", "board", "number", "instructions_per_pixel", ...}, ...]}`.
-    /// The scene may be given with or without its `.mts` extension.
+    /// The scene may be given with or without its `.mts` extension. Runs at another size than
+    /// 128x64 (when `width` and `height` say so) are left out; where a scene, board and type
+    /// has several runs, the build with only the scene's primitives (`"primitives": "scene"`,
+    /// or no such field) is the one kept, not an all-primitives build made to compare code size.
     pub fn parse(text: &str) -> Result<Self, String> {
         let json: serde_json::Value = serde_json::from_str(text).map_err(|error| format!("not JSON: {error}"))?;
         let runs = json.get("runs").and_then(|runs| runs.as_array()).ok_or("no \"runs\" array")?;
@@ -42,7 +45,15 @@ impl FirmwareFigures {
                 .get("instructions_per_pixel")
                 .and_then(|value| value.as_u64())
                 .ok_or_else(|| format!("run {position} has no whole-number \"instructions_per_pixel\""))?;
-            figures.per_pixel.insert((scene.to_owned(), text_field("board")?.to_owned(), text_field("number")?.to_owned()), per_pixel);
+            let size = (run.get("width").and_then(|w| w.as_u64()), run.get("height").and_then(|h| h.as_u64()));
+            if matches!(size, (Some(width), Some(height)) if (width, height) != (128, 64)) {
+                continue;
+            }
+            let key = (scene.to_owned(), text_field("board")?.to_owned(), text_field("number")?.to_owned());
+            let scene_primitives_only = run.get("primitives").and_then(|p| p.as_str()).is_none_or(|p| p == "scene");
+            if scene_primitives_only || !figures.per_pixel.contains_key(&key) {
+                figures.per_pixel.insert(key, per_pixel);
+            }
         }
         Ok(figures)
     }
@@ -70,6 +81,19 @@ mod tests {
         assert_eq!(figures.instructions_per_pixel("snooker", CORTEX_M3_BOARD, "f32"), Some(900));
         assert_eq!(figures.instructions_per_pixel("lattice", CORTEX_M4F_BOARD, "fixed"), Some(450));
         assert_eq!(figures.instructions_per_pixel("snooker", CORTEX_M4F_BOARD, "f32"), None);
+    }
+
+    #[test]
+    fn the_scene_primitives_build_at_128x64_is_the_one_kept() {
+        let figures = FirmwareFigures::parse(
+            r#"{"runs":[{"scene":"snooker","board":"lm3s6965evb","number":"f32","primitives":"all","instructions_per_pixel":5448},
+                        {"scene":"snooker","board":"lm3s6965evb","number":"f32","primitives":"scene","instructions_per_pixel":5432},
+                        {"scene":"snooker","board":"lm3s6965evb","number":"f32","primitives":"all","instructions_per_pixel":5449},
+                        {"scene":"lattice","board":"lm3s6965evb","number":"f32","width":466,"height":480,"instructions_per_pixel":1}]}"#,
+        )
+        .unwrap();
+        assert_eq!(figures.instructions_per_pixel("snooker", CORTEX_M3_BOARD, "f32"), Some(5432));
+        assert_eq!(figures.instructions_per_pixel("lattice", CORTEX_M3_BOARD, "f32"), None);
     }
 
     #[test]

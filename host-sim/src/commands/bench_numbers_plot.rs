@@ -22,8 +22,9 @@ pub struct PlotPoint {
 
 const WIDTH: u32 = 1000;
 const HEIGHT: u32 = 640;
-/// A log axis cannot show 0 %: identical images are drawn on this floor line.
-pub const PERCENT_FLOOR: f64 = 0.001;
+/// A log axis cannot show 0 %: identical images are drawn on this floor line, one pixel in a
+/// million, below one pixel of any image up to 1000x1000.
+pub const PERCENT_FLOOR: f64 = 0.0001;
 const FONT: &str = "sans-serif";
 static FONT_BYTES: &[u8] = include_bytes!("../../assets/DejaVuSans.ttf");
 
