@@ -174,11 +174,11 @@ pub fn markdown(runs: &[ReportRun]) -> String {
         );
     }
     text += &format!(
-        "\nOnly the scene's primitives against all four (`{ALL_PRIMITIVES_NUMBER}`): snooker uses only spheres, \
-         the lattice spheres and cylinders.\n\n"
+        "\nOnly the scene's primitives against all four, in `{ALL_PRIMITIVES_NUMBER}` (snooker uses only spheres,\n\
+         the lattice spheres and cylinders):\n\n"
     );
-    text += "| scene | board | flash, scene's primitives | flash, all four | static RAM, scene's primitives | static RAM, all four |\n";
-    text += "|---|---|---:|---:|---:|---:|\n";
+    text += "| scene | board | flash, scene's primitives | flash, all four | flash difference | static RAM, scene's primitives | static RAM, all four |\n";
+    text += "|---|---|---:|---:|---:|---:|---:|\n";
     for all in runs.iter().filter(|run| run.primitives == Primitives::All) {
         let Some(own) = runs.iter().find(|run| {
             run.primitives == Primitives::Scene && run.scene == all.scene && run.board == all.board && run.number == all.number
@@ -186,11 +186,12 @@ pub fn markdown(runs: &[ReportRun]) -> String {
             continue;
         };
         text += &format!(
-            "| {} | {} | {} | {} | {} | {} |\n",
+            "| {} | {} | {} | {} | {} | {} | {} |\n",
             all.scene,
             all.board.name(),
             thousands(own.flash_bytes),
             thousands(all.flash_bytes),
+            signed_thousands(all.flash_bytes as i64 - own.flash_bytes as i64),
             thousands(own.static_ram_bytes),
             thousands(all.static_ram_bytes)
         );
@@ -228,6 +229,12 @@ fn thousands(value: u64) -> String {
     out
 }
 
+/// -1234 -> "-1,234", 1234 -> "+1,234".
+fn signed_thousands(value: i64) -> String {
+    let sign = if value < 0 { "-" } else { "+" };
+    format!("{sign}{}", thousands(value.unsigned_abs()))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -238,6 +245,8 @@ mod tests {
         assert_eq!(thousands(999), "999");
         assert_eq!(thousands(1000), "1,000");
         assert_eq!(thousands(1234567), "1,234,567");
+        assert_eq!(signed_thousands(-1234), "-1,234");
+        assert_eq!(signed_thousands(2156), "+2,156");
     }
 
     #[test]
