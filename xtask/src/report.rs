@@ -26,6 +26,9 @@ pub struct ReportRun {
     pub board: Board,
     pub number: String,
     pub primitives: Primitives,
+    /// `scene` (the scene's own `optimize`) or `none` (every optimization off, so the
+    /// intersection arithmetic, where the number types differ, dominates).
+    pub optimizations: &'static str,
     pub width: u64,
     pub height: u64,
     pub instructions: u64,
@@ -36,21 +39,23 @@ pub struct ReportRun {
     pub stack_peak_bytes: u64,
 }
 
-/// What to run: every scene x board x number with the scene's primitives, then every scene x
-/// board with all four primitives.
-fn plan() -> Vec<(PathBuf, Board, &'static str, Primitives)> {
+/// What to run: every scene x board x number with the scene's primitives (with the scene's
+/// optimizations and with none), then every scene x board with all four primitives.
+fn plan() -> Vec<(PathBuf, Board, &'static str, Primitives, &'static str)> {
     let root = crate::repository_root();
     let mut plan = Vec::new();
-    for scene in SCENES {
-        for board in Board::ALL {
-            for number in NUMBERS {
-                plan.push((root.join(scene), board, number, Primitives::Scene));
+    for optimizations in ["scene", "none"] {
+        for scene in SCENES {
+            for board in Board::ALL {
+                for number in NUMBERS {
+                    plan.push((root.join(scene), board, number, Primitives::Scene, optimizations));
+                }
             }
         }
     }
     for scene in SCENES {
         for board in Board::ALL {
-            plan.push((root.join(scene), board, ALL_PRIMITIVES_NUMBER, Primitives::All));
+            plan.push((root.join(scene), board, ALL_PRIMITIVES_NUMBER, Primitives::All, "scene"));
         }
     }
     plan
@@ -61,15 +66,18 @@ pub fn run() -> Result<Vec<ReportRun>, String> {
     let plan = plan();
     let mut runs = Vec::with_capacity(plan.len());
     let started = std::time::Instant::now();
-    for (index, (scene, board, number, primitives)) in plan.iter().enumerate() {
+    for (index, (scene, board, number, primitives, optimizations)) in plan.iter().enumerate() {
         let stem = scene.file_stem().map(|stem| stem.to_string_lossy().into_owned()).unwrap_or_default();
-        let label = format!("{stem} {} {number} primitives={}", board.name(), primitives.name());
+        let label = format!("{stem} {} {number} primitives={} opt={optimizations}", board.name(), primitives.name());
         println!("[{}/{}] {label} ...", index + 1, plan.len());
         let out = crate::firmware_dir()
             .join("target/report")
-            .join(format!("{}-{stem}-{number}-{}", board.name(), primitives.name()));
+            .join(format!("{}-{stem}-{number}-{}-{optimizations}", board.name(), primitives.name()));
         let mut options = FirmwareOptions::new(scene, *board, number, out);
         options.primitives = *primitives;
+        options.optimizations = (*optimizations).to_owned();
+        // Every optimization off runs for minutes under QEMU on the lattice in f64.
+        options.timeout = std::time::Duration::from_secs(1200);
         let result = firmware::run(&options).map_err(|error| format!("{label}: {error}"))?;
         let get = |key: &str| result.numbers.get(key).copied().ok_or_else(|| format!("{label}: the report lacks `{key}`"));
         let run = ReportRun {
@@ -77,6 +85,7 @@ pub fn run() -> Result<Vec<ReportRun>, String> {
             board: *board,
             number: (*number).to_owned(),
             primitives: *primitives,
+            optimizations,
             width: get("width")?,
             height: get("height")?,
             instructions: get("instructions")?,
@@ -115,13 +124,14 @@ pub fn json(runs: &[ReportRun]) -> String {
         .iter()
         .map(|run| {
             format!(
-                "{{\"scene\":\"{}\",\"board\":\"{}\",\"number\":\"{}\",\"primitives\":\"{}\",\"width\":{},\"height\":{},\
+                "{{\"scene\":\"{}\",\"board\":\"{}\",\"number\":\"{}\",\"primitives\":\"{}\",\"optimizations\":\"{}\",\"width\":{},\"height\":{},\
                  \"instructions\":{},\"pixels\":{},\"instructions_per_pixel\":{},\"flash_bytes\":{},\
                  \"static_ram_bytes\":{},\"stack_peak_bytes\":{}}}",
                 run.scene,
                 run.board.name(),
                 run.number,
                 run.primitives.name(),
+                run.optimizations,
                 run.width,
                 run.height,
                 run.instructions,
@@ -160,7 +170,8 @@ pub fn markdown(runs: &[ReportRun]) -> String {
     );
     text += "| scene | board | number | instructions per pixel | instructions | flash bytes | static RAM bytes | peak stack bytes |\n";
     text += "|---|---|---|---:|---:|---:|---:|---:|\n";
-    for run in runs.iter().filter(|run| run.primitives == Primitives::Scene) {
+    let scene_optimizations = |run: &&ReportRun| run.primitives == Primitives::Scene && run.optimizations == "scene";
+    for run in runs.iter().filter(scene_optimizations) {
         text += &format!(
             "| {} | {} | {} | {} | {} | {} | {} | {} |\n",
             run.scene,
@@ -173,6 +184,7 @@ pub fn markdown(runs: &[ReportRun]) -> String {
             thousands(run.stack_peak_bytes)
         );
     }
+    text += &without_optimizations(runs);
     text += &format!(
         "\nOnly the scene's primitives against all four, in `{ALL_PRIMITIVES_NUMBER}` (snooker uses only spheres,\n\
          the lattice spheres and cylinders):\n\n"
@@ -181,7 +193,7 @@ pub fn markdown(runs: &[ReportRun]) -> String {
     text += "|---|---|---:|---:|---:|---:|---:|\n";
     for all in runs.iter().filter(|run| run.primitives == Primitives::All) {
         let Some(own) = runs.iter().find(|run| {
-            run.primitives == Primitives::Scene && run.scene == all.scene && run.board == all.board && run.number == all.number
+            scene_optimizations(run) && run.scene == all.scene && run.board == all.board && run.number == all.number
         }) else {
             continue;
         };
@@ -195,6 +207,44 @@ pub fn markdown(runs: &[ReportRun]) -> String {
             thousands(own.static_ram_bytes),
             thousands(all.static_ram_bytes)
         );
+    }
+    text
+}
+
+/// The table of instructions per pixel with every optimization off, against `f32` on the same
+/// board: the number type's own cost, which the optimizations' per-render work (in `f64`, the
+/// same for every number type) dilutes in the main table.
+fn without_optimizations(runs: &[ReportRun]) -> String {
+    let none = |run: &&ReportRun| run.primitives == Primitives::Scene && run.optimizations == "none";
+    if !runs.iter().any(|run| none(&run)) {
+        return String::new();
+    }
+    let mut text = String::from(
+        "\nWith every optimization off (`--opt none`), where the intersection and shading arithmetic\n\
+         dominates, instructions per pixel and, in brackets, how many times fewer than `f32` on the same\n\
+         board. With the optimizations on, far fewer intersections are left, and work that is the same\n\
+         for every number type (the optimizations' per-render projections, done in `f64`; writing\n\
+         pixels and the OLED) dilutes the differences in the table above:\n\n",
+    );
+    text += "| scene | board | f64 | f32 | fixed | fixed16 | f32-micromath |\n|---|---|---:|---:|---:|---:|---:|\n";
+    for scene in SCENES {
+        let stem = scene.trim_start_matches("scenes/").trim_end_matches(".mts");
+        for board in Board::ALL {
+            let find = |number: &str| runs.iter().filter(none).find(|run| run.scene == stem && run.board == board && run.number == number);
+            let Some(f32_run) = find("f32") else { continue };
+            text += &format!("| {stem} | {} |", board.name());
+            for number in NUMBERS {
+                text += &match find(number) {
+                    Some(run) => format!(
+                        " {} ({:.2}x) |",
+                        thousands(run.instructions_per_pixel),
+                        f32_run.instructions_per_pixel as f64 / run.instructions_per_pixel.max(1) as f64
+                    ),
+                    None => " — |".to_owned(),
+                };
+            }
+            text += "\n";
+        }
     }
     text
 }
@@ -269,6 +319,7 @@ mod tests {
             board: Board::Lm3s6965evb,
             number: "f32".into(),
             primitives: Primitives::Scene,
+            optimizations: "scene",
             width: 128,
             height: 64,
             instructions: 8192,
@@ -281,7 +332,7 @@ mod tests {
         assert_eq!(
             json(&[run]),
             "{\"runs\":[\n{\"scene\":\"snooker\",\"board\":\"lm3s6965evb\",\"number\":\"f32\",\"primitives\":\"scene\",\
-             \"width\":128,\"height\":64,\"instructions\":8192,\"pixels\":8192,\"instructions_per_pixel\":1,\
+             \"optimizations\":\"scene\",\"width\":128,\"height\":64,\"instructions\":8192,\"pixels\":8192,\"instructions_per_pixel\":1,\
              \"flash_bytes\":2,\"static_ram_bytes\":3,\"stack_peak_bytes\":4}\n]}\n"
         );
     }
