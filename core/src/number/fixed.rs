@@ -280,6 +280,7 @@ impl Neg for Fixed {
 impl Number for Fixed {
     const NAME: &'static str = "fixed";
     const FLOATING_POINT: bool = false;
+    const RESOLUTION: Self = Self::from_bits(1);
     const SCENE_LIMIT: f64 = Self::COORDINATE_LIMIT;
     const ZERO: Self = Self::from_bits(0);
     const ONE: Self = Self::from_bits(1 << 32);
@@ -438,6 +439,7 @@ impl Neg for Fixed16 {
 impl Number for Fixed16 {
     const NAME: &'static str = "fixed16";
     const FLOATING_POINT: bool = false;
+    const RESOLUTION: Self = Self::from_bits(1);
     const SCENE_LIMIT: f64 = Self::COORDINATE_LIMIT;
     const ZERO: Self = Self::from_bits(0);
     const ONE: Self = Self::from_bits(1 << 16);

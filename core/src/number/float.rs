@@ -9,6 +9,7 @@ macro_rules! float_number {
             const NAME: &'static str = $name;
             const SCENE_LIMIT: f64 = $limit;
             const FLOATING_POINT: bool = true;
+            const RESOLUTION: Self = 0.0;
             const ZERO: Self = 0.0;
             const ONE: Self = 1.0;
             const MAX: Self = <$type>::MAX;

@@ -106,6 +106,10 @@ pub trait Number:
         Self::dot3(v, v).sqrt()
     }
 
+    /// The smallest positive step of a fixed-point type (its rounding error is absolute); zero
+    /// for floating point, whose steps are relative to the value.
+    const RESOLUTION: Self;
+
     /// Whether the type is floating point: its precision is relative, so scaling by a power of
     /// two changes no result, and the rescaling that keeps fixed point precise can be skipped.
     const FLOATING_POINT: bool;

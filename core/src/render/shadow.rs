@@ -20,16 +20,20 @@ use crate::scene::Scene;
 use crate::scene::PreparedLight;
 use crate::shapes::Interval;
 
-/// How far off the surface a shadow ray starts, as a fraction of the hit point's largest
+/// How far off the surface a shadow ray starts, as a power of two of the hit point's largest
 /// coordinate (plus one): 2⁻¹⁷. Hundreds of times the rounding of a computed hit point in
 /// `f32` and Q32.32 (hard cases: no acne on coincident faces), far below a pixel.
-const OFFSET_DIVISOR: i32 = 1 << 17;
+const OFFSET_EXPONENT: i32 = -17;
+
+/// Fixed point's rounding is absolute as well: at least 2^this steps of its resolution (16).
+const RESOLUTION_STEPS_EXPONENT: i32 = 4;
 
 /// Where a shadow ray starts: `point` moved along the unit `normal` (which faces the light when
-/// a shadow ray is traced) by [`OFFSET_DIVISOR`]'s fraction of its magnitude.
+/// a shadow ray is traced) by 2^[`OFFSET_EXPONENT`] of its magnitude, plus 16 steps of a
+/// fixed-point type's resolution.
 pub fn shadow_origin<N: Number>(point: Vector3<N>, normal: Vector3<N>) -> Vector3<N> {
-    let magnitude = point.x.abs().max(point.y.abs()).max(point.z.abs()) + N::ONE;
-    let offset = magnitude.checked_div(N::from_i32(OFFSET_DIVISOR)).unwrap_or(N::ZERO);
+    let magnitude = point.largest_component() + N::ONE;
+    let offset = magnitude.times_power_of_two(OFFSET_EXPONENT) + N::RESOLUTION.times_power_of_two(RESOLUTION_STEPS_EXPONENT);
     point + normal * offset
 }
 
@@ -177,7 +181,11 @@ mod tests {
         coincident_twin_never_shadows::<f64>();
         coincident_twin_never_shadows::<f32>();
         #[cfg(feature = "fixed-point")]
-        coincident_twin_never_shadows::<crate::number::Fixed>();
+        {
+            coincident_twin_never_shadows::<crate::number::Fixed>();
+            // Q16.16's rounding is absolute: the offset's 16 steps of resolution cover it.
+            coincident_twin_never_shadows::<crate::number::Fixed16>();
+        }
     }
 
     #[test]
