@@ -26,7 +26,7 @@ mod firmware;
 #[path = "bench_numbers_plot.rs"]
 mod plot;
 
-use firmware::{FirmwareFigures, CORTEX_M3_BOARD, CORTEX_M4F_BOARD};
+use firmware::{Build, FirmwareFigures, CORTEX_M3_BOARD, CORTEX_M4F_BOARD};
 use plot::PlotPoint;
 
 pub const DEFAULT_REPORT: &str = "docs/numbers.md";
@@ -421,11 +421,12 @@ fn write_summary(report: &mut String, results: &[CaseResult], firmware: &Firmwar
         verdict(all_met(&f32, &|d| d.percent_identical() >= F32_IDENTICAL_PERCENT))
     )?;
     let stems: Vec<&str> = THESIS_SCENES.iter().map(|file| file.trim_end_matches(".mts")).collect();
-    let ratio = |stem: &str, number: &str| -> Option<InstructionRatio> {
-        let f32 = firmware.figures.instructions_per_pixel(stem, CORTEX_M3_BOARD, "f32")?;
-        let other = firmware.figures.instructions_per_pixel(stem, CORTEX_M3_BOARD, number)?;
+    let ratio_in = |build: Build, stem: &str, number: &str| -> Option<InstructionRatio> {
+        let f32 = firmware.figures.instructions_per_pixel_of(build, stem, CORTEX_M3_BOARD, "f32")?;
+        let other = firmware.figures.instructions_per_pixel_of(build, stem, CORTEX_M3_BOARD, number)?;
         Some(InstructionRatio { f32, other, ratio: f32 as f64 / other.max(1) as f64 })
     };
+    let ratio = |stem: &str, number: &str| ratio_in(Build::SceneOptimizations, stem, number);
     let speedups: Vec<(&str, Option<InstructionRatio>)> = stems.iter().map(|stem| (*stem, ratio(stem, "fixed"))).collect();
     let measured = speedups
         .iter()
@@ -478,6 +479,22 @@ fn write_summary(report: &mut String, results: &[CaseResult], firmware: &Firmwar
                 d.speckles
             ))
         )?;
+        let unoptimized: Vec<String> = stems
+            .iter()
+            .flat_map(|stem| ["fixed", "fixed16"].map(|number| (stem, number)))
+            .filter_map(|(stem, number)| {
+                ratio_in(Build::OptimizationsOff, stem, number)
+                    .map(|r| format!("{stem} f32 {} / {number} {} = {:.2}x", r.f32, r.other, r.ratio))
+            })
+            .collect();
+        if !unoptimized.is_empty() {
+            writeln!(
+                report,
+                "With every optimization off (every ray tests every object: the firmware report's \
+                 `optimizations: none` builds, Cortex-M3): {}.\n",
+                unoptimized.join("; ")
+            )?;
+        }
     } else if speedup_met.is_none() {
         writeln!(
             report,

@@ -8,10 +8,20 @@ use std::path::Path;
 pub const CORTEX_M3_BOARD: &str = "lm3s6965evb";
 pub const CORTEX_M4F_BOARD: &str = "mps2-an386";
 
-/// Instructions per pixel keyed by (scene file stem, board, number type name).
+/// Which firmware builds a figure comes from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub enum Build {
+    /// The scene's own optimizations, as the host renders it: the figures in the tables.
+    SceneOptimizations,
+    /// Every optimization off: nearly all the work is arithmetic, so the ratios between number
+    /// types show the types' own cost.
+    OptimizationsOff,
+}
+
+/// Instructions per pixel keyed by (build, scene file stem, board, number type name).
 #[derive(Debug, Default)]
 pub struct FirmwareFigures {
-    per_pixel: BTreeMap<(String, String, String), u64>,
+    per_pixel: BTreeMap<(Build, String, String, String), u64>,
 }
 
 impl FirmwareFigures {
@@ -28,9 +38,10 @@ impl FirmwareFigures {
 
     /// Parses `{"runs": [{"scene", "board", "number", "instructions_per_pixel", ...}, ...]}`.
     /// The scene may be given with or without its `.mts` extension. Runs at another size than
-    /// 128x64 (when `width` and `height` say so) are left out; where a scene, board and type
-    /// has several runs, the build with only the scene's primitives (`"primitives": "scene"`,
-    /// or no such field) is the one kept, not an all-primitives build made to compare code size.
+    /// 128x64 (when `width` and `height` say so) are left out, and so are builds with every
+    /// primitive (`"primitives": "all"`, made to compare code size). `"optimizations": "none"`
+    /// runs are [`Build::OptimizationsOff`]; runs with the scene's own (`"scene"`, or no such
+    /// field) are [`Build::SceneOptimizations`]; runs with any other choice are left out.
     pub fn parse(text: &str) -> Result<Self, String> {
         let json: serde_json::Value = serde_json::from_str(text).map_err(|error| format!("not JSON: {error}"))?;
         let runs = json.get("runs").and_then(|runs| runs.as_array()).ok_or("no \"runs\" array")?;
@@ -49,11 +60,17 @@ impl FirmwareFigures {
             if matches!(size, (Some(width), Some(height)) if (width, height) != (128, 64)) {
                 continue;
             }
-            let key = (scene.to_owned(), text_field("board")?.to_owned(), text_field("number")?.to_owned());
-            let scene_primitives_only = run.get("primitives").and_then(|p| p.as_str()).is_none_or(|p| p == "scene");
-            if scene_primitives_only || !figures.per_pixel.contains_key(&key) {
-                figures.per_pixel.insert(key, per_pixel);
+            let optional_text = |key: &str| run.get(key).and_then(|value| value.as_str()).unwrap_or("scene");
+            if optional_text("primitives") != "scene" {
+                continue;
             }
+            let build = match optional_text("optimizations") {
+                "scene" => Build::SceneOptimizations,
+                "none" => Build::OptimizationsOff,
+                _ => continue,
+            };
+            let key = (build, scene.to_owned(), text_field("board")?.to_owned(), text_field("number")?.to_owned());
+            figures.per_pixel.insert(key, per_pixel);
         }
         Ok(figures)
     }
@@ -62,8 +79,13 @@ impl FirmwareFigures {
         self.per_pixel.is_empty()
     }
 
+    /// The figure of the ordinary build (the scene's own optimizations).
     pub fn instructions_per_pixel(&self, scene: &str, board: &str, number: &str) -> Option<u64> {
-        self.per_pixel.get(&(scene.to_owned(), board.to_owned(), number.to_owned())).copied()
+        self.instructions_per_pixel_of(Build::SceneOptimizations, scene, board, number)
+    }
+
+    pub fn instructions_per_pixel_of(&self, build: Build, scene: &str, board: &str, number: &str) -> Option<u64> {
+        self.per_pixel.get(&(build, scene.to_owned(), board.to_owned(), number.to_owned())).copied()
     }
 }
 
@@ -84,15 +106,17 @@ mod tests {
     }
 
     #[test]
-    fn the_scene_primitives_build_at_128x64_is_the_one_kept() {
+    fn builds_are_told_apart_and_other_sizes_and_all_primitive_builds_left_out() {
         let figures = FirmwareFigures::parse(
-            r#"{"runs":[{"scene":"snooker","board":"lm3s6965evb","number":"f32","primitives":"all","instructions_per_pixel":5448},
-                        {"scene":"snooker","board":"lm3s6965evb","number":"f32","primitives":"scene","instructions_per_pixel":5432},
-                        {"scene":"snooker","board":"lm3s6965evb","number":"f32","primitives":"all","instructions_per_pixel":5449},
+            r#"{"runs":[{"scene":"snooker","board":"lm3s6965evb","number":"f32","primitives":"all","optimizations":"scene","instructions_per_pixel":5448},
+                        {"scene":"snooker","board":"lm3s6965evb","number":"f32","primitives":"scene","optimizations":"scene","instructions_per_pixel":5432},
+                        {"scene":"snooker","board":"lm3s6965evb","number":"f32","primitives":"scene","optimizations":"none","instructions_per_pixel":84250},
+                        {"scene":"snooker","board":"lm3s6965evb","number":"f32","optimizations":"grid","instructions_per_pixel":7},
                         {"scene":"lattice","board":"lm3s6965evb","number":"f32","width":466,"height":480,"instructions_per_pixel":1}]}"#,
         )
         .unwrap();
         assert_eq!(figures.instructions_per_pixel("snooker", CORTEX_M3_BOARD, "f32"), Some(5432));
+        assert_eq!(figures.instructions_per_pixel_of(Build::OptimizationsOff, "snooker", CORTEX_M3_BOARD, "f32"), Some(84250));
         assert_eq!(figures.instructions_per_pixel("lattice", CORTEX_M3_BOARD, "f32"), None);
     }
 
