@@ -167,11 +167,10 @@ pub fn run(args: ViewArgs) -> anyhow::Result<()> {
                     Action::ToggleExtents => o.extents = !o.extents,
                     Action::ToggleGrid => o.grid = !o.grid,
                     Action::ToggleSortlist => o.sortlist = !o.sortlist,
-                    Action::CycleNumber => {
-                        let all = NumberType::ALL;
-                        let at = all.iter().position(|n| *n == settings.number).unwrap_or(0);
-                        settings.number = all[(at + 1) % all.len()];
-                    }
+                    Action::CycleNumber => match next_number_type(&scene, settings.number) {
+                        Some(number) => settings.number = number,
+                        None => continue,
+                    },
                     Action::SwitchMode => settings.mode = if settings.mode == Mode::Pga { Mode::Rgb } else { Mode::Pga },
                     Action::ToggleDither => scene.dither = !scene.dither,
                     Action::ToggleShadows => scene.shadows = !scene.shadows,
@@ -193,6 +192,24 @@ pub fn run(args: ViewArgs) -> anyhow::Result<()> {
             }
         }
     }
+}
+
+/// The next number type after `current` that can represent the scene; the ones that cannot
+/// (beyond a fixed-point type's range) are skipped with their preparation error on stderr,
+/// rather than ending the window.
+fn next_number_type(scene: &HostScene, current: NumberType) -> Option<NumberType> {
+    let all = NumberType::ALL;
+    let at = all.iter().position(|n| *n == current).unwrap_or(0);
+    (1..all.len()).map(|step| all[(at + step) % all.len()]).find(|&number| {
+        let prepared = with_number_type!(number, N => Scene::<N, HOST_MAX_OBJECTS>::prepare(scene).map(|_| ()));
+        match prepared {
+            Ok(()) => true,
+            Err(error) => {
+                eprintln!("microtrace: skipping {}: {error}", number.name());
+                false
+            }
+        }
+    })
 }
 
 fn mode_name(mode: Mode) -> &'static str {
@@ -319,4 +336,18 @@ const PLAN_TOP: u32 = 4 + 12;
 
 fn on(value: bool) -> &'static str {
     if value { "on" } else { "off" }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn cycling_the_number_type_skips_the_types_the_scene_is_beyond() {
+        // Beyond fixed16's ±16 384 (the window) but within fixed's ±26 000.
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes/hard/large_coordinates.mts");
+        let scene = scene_file::load(&path).unwrap();
+        assert_eq!(next_number_type(&scene, NumberType::F32), Some(NumberType::Fixed));
+        assert_eq!(next_number_type(&scene, NumberType::Fixed), Some(NumberType::F32Micromath));
+    }
 }
