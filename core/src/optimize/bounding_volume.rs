@@ -11,6 +11,32 @@ use super::projection::View;
 
 /// Sides of the polygons circumscribed about the circles of spheres, cylinders and cones.
 pub const SIDES: usize = 16;
+
+/// The vertices of the regular `SIDES`-gon circumscribing the unit circle: (cos, sin) of
+/// 2πk/16 grown by 1/cos(π/16) and a relative 1e-9 (which covers these literals' last-bit
+/// rounding). A table, not `libm::sin`/`cos` per object: on a Cortex-M without a double FPU
+/// those 32 calls per object were a large part of the Pixelbuffer fill (firmware/README.md).
+const RING: [(f64, f64); SIDES] = {
+    // cos(2πk/16) for k = 0..4; the rest follow by symmetry.
+    const C: [f64; 5] = [1.0, 0.923_879_532_511_286_7, core::f64::consts::FRAC_1_SQRT_2, 0.382_683_432_365_089_8, 0.0];
+    const GROW: f64 = 1.019_591_158_208_318_4 * (1.0 + 1e-9); // 1/cos(π/16)
+    let mut ring = [(0.0, 0.0); SIDES];
+    let mut k = 0;
+    while k < SIDES {
+        // cos and sin of 2πk/16 from the first quadrant's values.
+        let quadrant = k / 4;
+        let step = k % 4;
+        let (cos, sin) = match quadrant {
+            0 => (C[step], C[4 - step]),
+            1 => (-C[4 - step], C[step]),
+            2 => (-C[step], -C[4 - step]),
+            _ => (C[4 - step], -C[step]),
+        };
+        ring[k] = (cos * GROW, sin * GROW);
+        k += 1;
+    }
+    ring
+};
 /// Most points a silhouette is built from (8, the volume's vertices, without the
 /// `acceleration-tables` feature, which then also leaves out the tight silhouettes to keep the
 /// stack small).
@@ -90,11 +116,7 @@ impl ObjectGeometry {
         if MAX_POINTS < 2 * SIDES {
             return None;
         }
-        let grow = 1.0 / libm::cos(core::f64::consts::PI / SIDES as f64) * (1.0 + 1e-9);
-        let ring = |k: usize| {
-            let angle = 2.0 * core::f64::consts::PI * k as f64 / SIDES as f64;
-            (libm::cos(angle) * grow, libm::sin(angle) * grow)
-        };
+        let ring = |k: usize| RING[k];
         let world = |p: [f64; 3]| self.world_from_object.transform_point(p);
         match self.primitive {
             Primitive::Cube => {
@@ -265,4 +287,24 @@ fn segment_distance(p: [f64; 3], a: [f64; 3], b: [f64; 3]) -> f64 {
 fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {
     let d = [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
     libm::sqrt(dot(d, d))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The table is the regular 16-gon around the unit circle, grown only by the margin: each
+    /// vertex is libm's cos/sin times 1/cos(π/16)·(1 + 1e-9) to the last bits, and every edge's
+    /// midpoint lies outside the unit circle (so the polygon circumscribes it).
+    #[test]
+    fn the_ring_table_circumscribes_the_unit_circle() {
+        let grow = 1.0 / libm::cos(core::f64::consts::PI / SIDES as f64) * (1.0 + 1e-9);
+        for (k, (x, y)) in RING.iter().enumerate() {
+            let angle = 2.0 * core::f64::consts::PI * k as f64 / SIDES as f64;
+            assert!((x - libm::cos(angle) * grow).abs() < 1e-15 && (y - libm::sin(angle) * grow).abs() < 1e-15, "vertex {k}");
+            let (next_x, next_y) = RING[(k + 1) % SIDES];
+            let midpoint = ((x + next_x) / 2.0, (y + next_y) / 2.0);
+            assert!(midpoint.0 * midpoint.0 + midpoint.1 * midpoint.1 > 1.0, "edge {k}");
+        }
+    }
 }
