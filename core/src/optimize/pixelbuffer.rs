@@ -32,6 +32,12 @@ pub fn band_span(polygon: &Polygon, axis: usize, first: f64, last: f64, count: u
     let points = polygon.vertices();
     for (i, &a) in points.iter().enumerate() {
         let b = points[(i + 1) % points.len()];
+        // Most edges of a convex polygon miss a one-row band: skip them before dividing (two
+        // software divisions per edge and row were most of the fill's cost on a Cortex-M).
+        let (edge_low, edge_high) = if a[axis] <= b[axis] { (a[axis], b[axis]) } else { (b[axis], a[axis]) };
+        if edge_high < low || edge_low > high {
+            continue;
+        }
         let dy = b[axis] - a[axis];
         if dy == 0.0 {
             if a[axis] >= low && a[axis] <= high {
