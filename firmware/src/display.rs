@@ -57,6 +57,13 @@ impl<D: DrawTarget<Color = Gray4> + FlushRows> PixelSink<u8> for FramebufferAndD
         }
     }
 
+    fn fill_row(&mut self, x: u16, y: u16, width: u16, value: u8) {
+        self.framebuffer.fill_row(x, y, width, value);
+        if let Some(display) = &mut self.display {
+            display.fill_row(x, y, width, value);
+        }
+    }
+
     fn row_done(&mut self, _y: u16) {
         if let Some(display) = &mut self.display {
             display.target.flush();

@@ -2,7 +2,8 @@
 //! table: one for colour displays, one for grey displays (the firmware's OLED).
 
 use embedded_graphics_core::pixelcolor::{Gray4, Rgb888 as EgRgb888};
-use embedded_graphics_core::prelude::{DrawTarget, PixelColor, Point};
+use embedded_graphics_core::prelude::{DrawTarget, PixelColor, Point, Size};
+use embedded_graphics_core::primitives::Rectangle;
 use embedded_graphics_core::Pixel;
 
 use super::PixelSink;
@@ -38,6 +39,16 @@ where
         });
         let _ = self.target.draw_iter(pixels);
     }
+
+    fn fill_row(&mut self, x: u16, y: u16, width: u16, index: u8) {
+        let [r, g, b] = self.palette.entry(index).to_rgb888();
+        let _ = self.target.fill_solid(&row_rectangle(self.offset, x, y, width), C::from(EgRgb888::new(r, g, b)));
+    }
+}
+
+/// The one-row rectangle of `width` pixels from image pixel (x, y), on the target.
+fn row_rectangle(offset: Point, x: u16, y: u16, width: u16) -> Rectangle {
+    Rectangle::new(offset + Point::new(i32::from(x), i32::from(y)), Size::new(u32::from(width), 1))
 }
 
 /// Drives a 16-grey `DrawTarget`: palette index -> LUT entry -> luminance 0..15.
@@ -70,6 +81,10 @@ where
             .enumerate()
             .map(|(offset, index)| Pixel(origin + Point::new(offset as i32, 0), grey_level(palette, *index)));
         let _ = self.target.draw_iter(pixels);
+    }
+
+    fn fill_row(&mut self, x: u16, y: u16, width: u16, index: u8) {
+        let _ = self.target.fill_solid(&row_rectangle(self.offset, x, y, width), grey_level(self.palette, index));
     }
 }
 

@@ -57,6 +57,13 @@ impl<P: Copy> PixelSink<P> for FrameBuffer<'_, P> {
             self.pixels[start..start + count].copy_from_slice(&values[..count]);
         }
     }
+
+    fn fill_row(&mut self, x: u16, y: u16, width: u16, value: P) {
+        if let Some(start) = self.index(x, y) {
+            let count = usize::from(width.min(self.width - x));
+            self.pixels[start..start + count].fill(value);
+        }
+    }
 }
 
 impl<P: Copy> PixelSource<P> for FrameBuffer<'_, P> {

@@ -51,3 +51,32 @@ fn draw_target_adapters_go_through_the_look_up_table() {
     assert_eq!(grey.target.get_pixel(Point::new(2, 0)).map(|c| c.luma()), Some(9));
     let _ = Gray4::WHITE;
 }
+
+/// The fast `fill_row` paths write exactly what the default (one `set_pixel` per pixel) does,
+/// clipped at the right edge.
+#[test]
+fn fill_row_fast_paths_match_the_default() {
+    use embedded_graphics::mock_display::MockDisplay;
+    use embedded_graphics::pixelcolor::{Gray4, Rgb888 as EgRgb888};
+    use embedded_graphics::prelude::*;
+
+    let mut pixels = [0u8; 8];
+    let mut frame = FrameBuffer::new(&mut pixels, 4, 2).unwrap();
+    frame.fill_row(1, 1, 10, 7); // runs past the right edge
+    frame.fill_row(4, 0, 2, 9); // starts outside: nothing
+    assert_eq!(frame.pixels(), &[0, 0, 0, 0, 0, 7, 7, 7]);
+
+    let mut palette = Palette::grey();
+    palette.entries[17] = Rgb4::new(15, 0, 0);
+    let mut filled = DrawTargetSink { target: MockDisplay::<EgRgb888>::new(), palette: &palette, offset: Point::new(1, 2) };
+    let mut pixel_by_pixel = DrawTargetSink { target: MockDisplay::<EgRgb888>::new(), palette: &palette, offset: Point::new(1, 2) };
+    filled.fill_row(2, 3, 5, 17);
+    (2..7).for_each(|x| pixel_by_pixel.set_pixel(x, 3, 17));
+    filled.target.assert_eq(&pixel_by_pixel.target);
+
+    let mut filled = GreyDrawTargetSink { target: MockDisplay::<Gray4>::new(), palette: &palette, offset: Point::zero() };
+    let mut pixel_by_pixel = GreyDrawTargetSink { target: MockDisplay::<Gray4>::new(), palette: &palette, offset: Point::zero() };
+    filled.fill_row(0, 1, 4, 17);
+    (0..4).for_each(|x| pixel_by_pixel.set_pixel(x, 1, 17));
+    filled.target.assert_eq(&pixel_by_pixel.target);
+}
