@@ -1,26 +1,10 @@
 //! The `microtrace` command as a user runs it: outputs, errors, and no partial files.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::path::Path;
 
-fn microtrace(arguments: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_microtrace"))
-        .args(arguments)
-        .current_dir(Path::new(env!("CARGO_MANIFEST_DIR")).join(".."))
-        .output()
-        .expect("the microtrace binary runs")
-}
+mod common;
 
-fn scratch(name: &str) -> PathBuf {
-    let directory = std::env::temp_dir().join(format!("microtrace-cli-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&directory);
-    std::fs::create_dir_all(&directory).unwrap();
-    directory
-}
-
-fn text(bytes: &[u8]) -> String {
-    String::from_utf8_lossy(bytes).into_owned()
-}
+use common::{microtrace, scratch, text};
 
 #[test]
 fn renders_a_thesis_scene_to_png_and_every_file_format_round_trips() {

@@ -1,30 +1,14 @@
 //! Every number type through the command line: `render --number` on the thesis scenes at
 //! 128x64 against f64, and `bench --numbers` end to end on small scenes.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::path::Path;
 
 use microtrace_sim::image_difference::ImageDifference;
 use microtrace_sim::number_type::NumberType;
 
-fn microtrace(arguments: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_microtrace"))
-        .args(arguments)
-        .current_dir(Path::new(env!("CARGO_MANIFEST_DIR")).join(".."))
-        .output()
-        .expect("the microtrace binary runs")
-}
+mod common;
 
-fn scratch(name: &str) -> PathBuf {
-    let directory = std::env::temp_dir().join(format!("microtrace-numbers-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&directory);
-    std::fs::create_dir_all(&directory).unwrap();
-    directory
-}
-
-fn text(bytes: &[u8]) -> String {
-    String::from_utf8_lossy(bytes).into_owned()
-}
+use common::{microtrace, scratch, text};
 
 /// Renders `scene` at 128x64 with `number` and returns the palette indices (the data of the
 /// uncompressed PGA file after its 9-byte header).

@@ -38,6 +38,20 @@ impl Drop for Xvfb {
 }
 
 /// A display to open the window on: `DISPLAY` if set, else a private Xvfb.
+/// A display to test on; without one the test is skipped with a message, except in CI
+/// (`CI=true`), where that is a failure.
+fn display_or_skip() -> Option<(String, Option<Xvfb>)> {
+    let found = display();
+    if found.is_none() {
+        let message = "no X display: set DISPLAY or install Xvfb (Debian: xvfb) to test the simulator window";
+        if std::env::var("CI").is_ok_and(|v| v == "true" || v == "1") {
+            panic!("{message}");
+        }
+        eprintln!("skipped: {message}");
+    }
+    found
+}
+
 fn display() -> Option<(String, Option<Xvfb>)> {
     if let Ok(display) = std::env::var("DISPLAY") {
         if !display.is_empty() {
@@ -126,14 +140,7 @@ fn check_scene(binary: &Path, display: &str, scene: &str, extra: &[&str]) {
 
 #[test]
 fn window_shows_the_same_image_as_render() {
-    let Some((display, _xvfb)) = display() else {
-        let message = "no X display: set DISPLAY or install Xvfb (Debian: xvfb) to test the simulator window";
-        if std::env::var("CI").is_ok_and(|v| v == "true" || v == "1") {
-            panic!("{message}");
-        }
-        eprintln!("skipped: {message}");
-        return;
-    };
+    let Some((display, _xvfb)) = display_or_skip() else { return };
     let binary = microtrace_binary();
     check_scene(&binary, &display, "snooker", &[]);
     check_scene(&binary, &display, "lattice", &["--mode", "rgb"]);
@@ -212,14 +219,7 @@ fn check_overlay_and_fill(binary: &Path, display: &str) {
 
 #[test]
 fn overlay_draws_extents_grid_and_plan_view_and_fill_tints_the_filled_pixels() {
-    let Some((display, _xvfb)) = display() else {
-        let message = "no X display: set DISPLAY or install Xvfb (Debian: xvfb) to test the simulator window";
-        if std::env::var("CI").is_ok_and(|v| v == "true" || v == "1") {
-            panic!("{message}");
-        }
-        eprintln!("skipped: {message}");
-        return;
-    };
+    let Some((display, _xvfb)) = display_or_skip() else { return };
     let binary = microtrace_binary();
     check_overlay_and_fill(&binary, &display);
 }
