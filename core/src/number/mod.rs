@@ -12,11 +12,15 @@ mod fixed;
 mod float;
 #[cfg(feature = "micromath")]
 mod micromath;
+#[cfg(feature = "soft-float")]
+mod soft_float;
 
 #[cfg(feature = "fixed-point")]
 pub use fixed::{Fixed, Fixed16};
 #[cfg(feature = "micromath")]
 pub use micromath::F32Micro;
+#[cfg(feature = "soft-float")]
+pub use soft_float::SoftFloat;
 
 use core::fmt::Debug;
 use core::ops::{Add, Mul, Neg, Sub};
