@@ -7,7 +7,7 @@
 //!
 //! Environment (all optional):
 //! - `MICROTRACE_SCENE`: absolute path of a `.mts` file (default: `../scenes/snooker.mts`).
-//! - `MICROTRACE_NUMBER`: `f64`, `f32`, `fixed`, `fixed16` or `f32-micromath` (default `f32`).
+//! - `MICROTRACE_NUMBER`: `f64`, `f32`, `fixed`, `fixed16`, `f32-micromath` or `soft32` (default `f32`).
 //! - `MICROTRACE_SIZE`: `WIDTHxHEIGHT` of the render (default `128x64`, the OLED).
 //! - `MICROTRACE_OPT`: `scene` (default: keep the scene's `optimize`), `all`, `none`, or a comma
 //!   list of `pixelbuffer,extents,grid,sortlist`.
@@ -108,7 +108,8 @@ fn number_type(name: &str) -> &'static str {
         "fixed" => ("microtrace::number::Fixed", Some("fixed-point")),
         "fixed16" => ("microtrace::number::Fixed16", Some("fixed-point")),
         "f32-micromath" => ("microtrace::number::F32Micro", Some("micromath")),
-        other => fail(&format!("MICROTRACE_NUMBER={other}: expected f64, f32, fixed, fixed16 or f32-micromath")),
+        "soft32" => ("microtrace::number::SoftFloat", Some("soft-float")),
+        other => fail(&format!("MICROTRACE_NUMBER={other}: expected f64, f32, fixed, fixed16, f32-micromath or soft32")),
     };
     if let Some(feature) = feature {
         if env(&format!("CARGO_FEATURE_{}", feature.to_uppercase().replace('-', "_"))).is_none() {

@@ -77,7 +77,7 @@ impl Primitives {
 #[derive(Clone, Debug)]
 pub struct FirmwareOptions {
     pub scene: PathBuf,
-    /// `f64`, `f32`, `fixed`, `fixed16` or `f32-micromath` (firmware/build.rs maps them to types).
+    /// `f64`, `f32`, `fixed`, `fixed16`, `f32-micromath` or `soft32` (firmware/build.rs maps them to types).
     pub number: String,
     pub board: Board,
     /// `scene` (keep the scene's `optimize`), `all`, `none`, or a comma list.
@@ -117,7 +117,7 @@ pub struct FirmwareRun {
 static BUILD_LOCK: Mutex<()> = Mutex::new(());
 
 /// The number types firmware/build.rs knows.
-pub const NUMBERS: [&str; 5] = ["f64", "f32", "fixed", "fixed16", "f32-micromath"];
+pub const NUMBERS: [&str; 6] = ["f64", "f32", "fixed", "fixed16", "f32-micromath", "soft32"];
 
 pub fn run(options: &FirmwareOptions) -> Result<FirmwareRun, String> {
     check_options(options)?;
@@ -222,6 +222,7 @@ fn number_feature(number: &str) -> Option<&'static str> {
     match number {
         "fixed" | "fixed16" => Some("fixed-point"),
         "f32-micromath" => Some("micromath"),
+        "soft32" => Some("soft-float"),
         _ => None,
     }
 }

@@ -7,7 +7,7 @@ use xtask::firmware::{self, Board, FirmwareOptions};
 
 fn usage() -> &'static str {
     "usage:
-  cargo xtask firmware [--scene FILE] [--board lm3s6965evb|mps2-an386] [--number f64|f32|fixed|fixed16|f32-micromath]
+  cargo xtask firmware [--scene FILE] [--board lm3s6965evb|mps2-an386] [--number f64|f32|fixed|fixed16|f32-micromath|soft32]
                        [--opt scene|all|none|pixelbuffer,extents,grid,sortlist] [--out DIR]
                        [--timeout SECONDS]
       Builds the firmware for the scene (default scenes/snooker.mts), runs it under QEMU and

@@ -226,7 +226,7 @@ fn without_optimizations(runs: &[ReportRun]) -> String {
          for every number type (the optimizations' per-render projections, done in `f64`; writing\n\
          pixels and the OLED) dilutes the differences in the table above:\n\n",
     );
-    text += "| scene | board | f64 | f32 | fixed | fixed16 | f32-micromath |\n|---|---|---:|---:|---:|---:|---:|\n";
+    text += &format!("| scene | board | {} |\n|---|---|{}\n", NUMBERS.join(" | "), "---:|".repeat(NUMBERS.len()));
     for scene in SCENES {
         let stem = scene.trim_start_matches("scenes/").trim_end_matches(".mts");
         for board in Board::ALL {
