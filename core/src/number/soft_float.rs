@@ -12,13 +12,16 @@
 //! The three bits of headroom above the mantissa are what make it cheap on a Cortex-M3: a sum
 //! of two mantissas with two guard bits, and a sum of three products cut to 29 bits, fit an
 //! `i32`, so additions and dot products run in 32-bit registers; a product is one 32×32→64
-//! multiply (`SMULL`/`UMULL`); normalising is one `CLZ` and a shift; division uses the 32-bit
-//! `UDIV`. Rounding is to nearest (ties away from zero) from the exact result in
-//! multiplication, division, square root and the conversions. Additions are exact when the
-//! exponents differ by at most 2 (so `x − y` is exact for `y/2 ≤ x ≤ 2y`, as in IEEE
-//! arithmetic) and otherwise faithful: within one unit in the last place, 2⁻²⁷ relative.
-//! `dot3` cuts its exact products at 2⁻²⁷ of their size before one rounding (exact when each
-//! product has a power-of-two factor).
+//! multiply (`SMULL`); normalising is one `CLZ` and a shift, on the two's complement without
+//! taking absolute values; division uses the 32-bit `UDIV`. Multiplication, division, square
+//! root and the conversions round the exact result to nearest (ties toward +∞ where the
+//! mantissa is signed: products and sums; away from zero in division and the conversions).
+//! Additions are exact before that rounding when the exponents differ by at most 2 (so
+//! `x − y` is exact for `y/2 ≤ x ≤ 2y`, as in IEEE arithmetic) and otherwise faithful: within
+//! one unit in the last place, 2⁻²⁷ relative. `dot3` rounds its exact products to 2⁻²⁷ of
+//! their size (exact when a factor is a power of two; opposite products cancel exactly) and
+//! aligns them before one final rounding: its error is within about 2⁻²⁶ of the largest
+//! product, where `f32`'s is within about 2⁻²³.
 //!
 //! Nothing here can panic: every shift amount is bounded and every intermediate fits its
 //! integer type (the comments say why).
@@ -70,44 +73,69 @@ impl SoftFloat {
     }
 }
 
-/// `±rounded · 2^(exponent − 27)` for a magnitude in [2²⁷, 2²⁸]: a rounding carry (2²⁸) moves
-/// into the exponent; beyond the exponent range the value saturates or flushes to zero.
+/// `mantissa · 2^(exponent − 27)` for a mantissa whose magnitude lies in [2²⁷, 2²⁸]: ±2²⁸
+/// (a rounding carry, or a negative power of two normalised as two's complement) moves into
+/// the exponent; beyond the exponent range the value saturates or flushes to zero.
 #[inline(always)]
-fn from_rounded(negative: bool, rounded: u32, exponent: i32) -> SoftFloat {
-    // rounded = 2^28 exactly when rounding carried out of the mantissa: halve it (exact).
-    let carry = rounded >> (FRACTION_BITS + 1);
-    let magnitude = (rounded >> carry) as i32;
-    let exponent = exponent + carry as i32;
-    // One unsigned comparison for both ends of the range.
-    if (exponent - MIN_EXPONENT) as u32 > (MAX_EXPONENT - MIN_EXPONENT) as u32 {
-        return if exponent < MIN_EXPONENT {
-            SoftFloat::ZERO
-        } else if negative {
+fn from_signed(mantissa: i32, exponent: i32) -> SoftFloat {
+    // ±2^28 are the only allowed inputs that are multiples of 2^29 once 2^28 is added; both
+    // they and exponents out of range are rare, so they share one branch to an outlined path.
+    let carried = (mantissa + (1 << 28)) & ((1 << 29) - 1) == 0;
+    let out_of_range = (exponent - MIN_EXPONENT) as u32 > (MAX_EXPONENT - MIN_EXPONENT) as u32;
+    if carried || out_of_range {
+        return from_signed_rare(mantissa, exponent);
+    }
+    SoftFloat { mantissa, exponent }
+}
+
+/// [`from_signed`]'s rare cases: a carry to fold into the exponent, an exponent out of range.
+#[cold]
+#[inline(never)]
+fn from_signed_rare(mantissa: i32, exponent: i32) -> SoftFloat {
+    let (mantissa, exponent) = if (mantissa + (1 << 28)) & ((1 << 29) - 1) == 0 {
+        (mantissa >> 1, exponent + 1) // exact
+    } else {
+        (mantissa, exponent)
+    };
+    if exponent < MIN_EXPONENT {
+        SoftFloat::ZERO
+    } else if exponent > MAX_EXPONENT {
+        if mantissa < 0 {
             -SoftFloat::MAX
         } else {
             SoftFloat::MAX
-        };
+        }
+    } else {
+        SoftFloat { mantissa, exponent }
     }
-    SoftFloat { mantissa: if negative { -magnitude } else { magnitude }, exponent }
 }
 
-/// `±magnitude · 2^(exponent − 31)`, rounded to 28 bits: the leading bit is moved to bit 27,
-/// rounding the bits shifted out when it is above.
+/// `±rounded · 2^(exponent − 27)` for a magnitude in [2²⁷, 2²⁸] (see [`from_signed`]).
 #[inline(always)]
-fn normalise(negative: bool, magnitude: u32, exponent: i32) -> SoftFloat {
-    if magnitude == 0 {
+fn from_rounded(negative: bool, rounded: u32, exponent: i32) -> SoftFloat {
+    let magnitude = rounded as i32; // ≤ 2^28
+    from_signed(if negative { -magnitude } else { magnitude }, exponent)
+}
+
+/// `value · 2^(exponent − 31)` for any `i32`, rounded to 28 bits (to nearest, ties toward
+/// +∞): the leading bit is moved to bit 27, rounding the bits shifted out when it is above.
+/// Works on the two's complement directly, with no absolute value: the leading bit is the
+/// first that differs from the sign bit (`CLZ` of `value ^ (value >> 31)`), which for a
+/// negative power of two is one place further down, giving the mantissa −2²⁸ that
+/// [`from_signed`] folds into the exponent.
+#[inline(always)]
+fn normalise(value: i32, exponent: i32) -> SoftFloat {
+    if value == 0 {
         return SoftFloat::ZERO;
     }
-    let leading_zeros = magnitude.leading_zeros(); // 0..=31
-    // The leading bit is at 31 − leading_zeros: the value's binary exponent is
-    // exponent − leading_zeros.
-    let rounded = if leading_zeros < 4 {
-        // Shift right by 1..=4, rounding half up: ((m >> (s − 1)) + 1) >> 1 cannot overflow.
-        ((magnitude >> (3 - leading_zeros)) + 1) >> 1
+    let leading = (value ^ (value >> 31)).leading_zeros(); // 1..=32: bit 31 of the XOR is 0
+    let mantissa = if leading < 4 {
+        // Shift right by 1..=3, rounding: ((v >> (s − 1)) + 1) >> 1; |v >> (s − 1)| < 2^30.
+        ((value >> (3 - leading)) + 1) >> 1
     } else {
-        magnitude << (leading_zeros - 4)
+        value << (leading - 4)
     };
-    from_rounded(negative, rounded, exponent - leading_zeros as i32)
+    from_signed(mantissa, exponent - leading as i32)
 }
 
 /// `(high·2³² + low) / divisor` for a divisor with its top bit set and `high < divisor`, so
@@ -225,23 +253,38 @@ impl Add for SoftFloat {
     type Output = Self;
     #[inline]
     fn add(self, other: Self) -> Self {
-        let (larger, smaller) = if self.exponent >= other.exponent { (self, other) } else { (other, self) };
-        // Both exponents lie in [ZERO_EXPONENT, MAX_EXPONENT]: no overflow.
-        let difference = (larger.exponent - smaller.exponent) as u32;
-        if difference > 29 {
-            // |smaller| < 2^(larger.exponent − 29), a quarter of larger's last place: larger is
-            // the sum rounded to nearest (also at a power of two, where the spacing below is
-            // half). Zero is always the smaller one and lands here unless both are tiny.
-            return larger;
+        // Both exponents lie in [ZERO_EXPONENT, MAX_EXPONENT]: no overflow. Two straight paths
+        // by the sign of the difference are cheaper than swapping the operands first.
+        let difference = self.exponent - other.exponent;
+        if difference >= 0 {
+            if difference > 29 {
+                return self;
+            }
+            aligned_sum(self, other, difference as u32)
+        } else {
+            if difference < -29 {
+                return other;
+            }
+            aligned_sum(other, self, difference.unsigned_abs())
         }
-        // Both mantissas with two guard bits (below 2^30 each, so the sum is below 2^31), the
-        // smaller one shifted into place: exact when difference ≤ 2, otherwise its bits below
-        // the guard bits are cut (rounded toward −∞), less than a quarter of a unit in the
-        // last place before the final rounding.
-        let sum = (larger.mantissa << 2) + ((smaller.mantissa << 2) >> difference);
-        // sum · 2^(larger.exponent − 27 − 2) = sum · 2^((larger.exponent + 2) − 31).
-        normalise(sum < 0, sum.unsigned_abs(), larger.exponent + 2)
     }
+}
+
+/// `larger + smaller` for `larger.exponent − smaller.exponent = difference` in 0..=29.
+///
+/// Beyond 29 the smaller addend is below 2^(larger.exponent − 29), a quarter of larger's last
+/// place, so larger itself is the sum rounded to nearest (also at a power of two, where the
+/// spacing below is half): the caller returns it. Zero has the lowest exponent and is always
+/// dropped there unless both operands are tiny.
+#[inline(always)]
+fn aligned_sum(larger: SoftFloat, smaller: SoftFloat, difference: u32) -> SoftFloat {
+    // Both mantissas with two guard bits (below 2^30 each, so the sum is below 2^31), the
+    // smaller one shifted into place: exact when difference ≤ 2, otherwise its bits below the
+    // guard bits are cut (rounded toward −∞), less than a quarter of a unit in the last place
+    // before the final rounding.
+    let sum = (larger.mantissa << 2) + ((smaller.mantissa << 2) >> difference);
+    // sum · 2^(larger.exponent − 27 − 2) = sum · 2^((larger.exponent + 2) − 31).
+    normalise(sum, larger.exponent + 2)
 }
 
 impl Sub for SoftFloat {
@@ -256,18 +299,21 @@ impl Mul for SoftFloat {
     type Output = Self;
     #[inline]
     fn mul(self, other: Self) -> Self {
-        let negative = (self.mantissa ^ other.mantissa) < 0;
-        // One UMULL: the exact product of the magnitudes, in [2^54, 2^56), or 0.
-        let product = u64::from(self.mantissa.unsigned_abs()) * u64::from(other.mantissa.unsigned_abs());
-        // product · 2^(self.exponent + other.exponent − 54): round off 28 or 27 bits. A zero
-        // factor's exponent puts the sum far below the range, which flushes it to zero.
+        // One SMULL: the exact product, magnitude in [2^54, 2^56), or 0.
+        let product = i64::from(self.mantissa) * i64::from(other.mantissa);
+        // product · 2^(self.exponent + other.exponent − 54): round off 28 bits when the
+        // magnitude is 2^55 or more (the top word, sign bits flipped, says so; −2^55 itself
+        // takes the other branch and carries), otherwise 27. Both give [−2^28, −2^27] or
+        // [2^27, 2^28]. A zero factor's exponent puts the sum far below the range, which
+        // flushes the product to zero.
+        let high = (product >> 32) as i32;
         let exponent = self.exponent + other.exponent;
-        let (rounded, exponent) = if product >= 1 << 55 {
-            (((product + (1 << 27)) >> 28) as u32, exponent + 1)
+        let (rounded, exponent) = if (high ^ (high >> 31)) >= 1 << 23 {
+            (((product + (1 << 27)) >> 28) as i32, exponent + 1)
         } else {
-            (((product + (1 << 26)) >> 27) as u32, exponent)
+            (((product + (1 << 26)) >> 27) as i32, exponent)
         };
-        from_rounded(negative, rounded, exponent)
+        from_signed(rounded, exponent)
     }
 }
 
@@ -314,7 +360,7 @@ impl Number for SoftFloat {
 
     fn from_i32(value: i32) -> Self {
         // value = value · 2^(31 − 31).
-        normalise(value < 0, value.unsigned_abs(), 31)
+        normalise(value, 31)
     }
 
     /// Correctly rounded (to nearest, ties away from zero).
@@ -398,26 +444,30 @@ impl Number for SoftFloat {
 
     /// The three products, each exact (`SMULL`) and then cut to 29 bits, aligned and summed in
     /// an `i32`, then rounded once: one normalisation instead of five, all in 32-bit registers.
-    /// Inlined: the callers gather columns into arrays, which inlining turns into registers.
-    #[inline(always)]
+    /// Inlined where LLVM sees fit: the callers gather columns into arrays, which inlining
+    /// turns into registers.
+    #[inline]
     fn dot3(a: [Self; 3], b: [Self; 3]) -> Self {
-        // product · 2^(exponent − 54) with |product| in [2^54, 2^56) (or 0): rounded to
+        // product · 2^(exponent − 54) with |product| in [2^54, 2^56) (or 0), rounded to
         // product / 2^27 (half up: opposite products round to opposite terms, so they cancel
-        // exactly, as in IEEE arithmetic), at most 2^29 in magnitude and exact when a factor is
-        // a power of two. A product with a zero factor is 0 with an exponent below any non-zero
-        // product's.
+        // exactly, as in IEEE arithmetic): at most 2^29 in magnitude, and exact when a factor
+        // is a power of two. Kept as product / 2^26 plus one (below 2^30 + 1), whose halving
+        // completes the rounding and joins the alignment shift below. A product with a zero
+        // factor is 0 with an exponent below any non-zero product's.
         let term = |i: usize| {
             let product = i64::from(a[i].mantissa) * i64::from(b[i].mantissa);
-            (((product + (1 << (FRACTION_BITS - 1))) >> FRACTION_BITS) as i32, a[i].exponent + b[i].exponent)
+            (((product >> (FRACTION_BITS - 1)) as i32) + 1, a[i].exponent + b[i].exponent)
         };
         let (first, second, third) = (term(0), term(1), term(2));
         let largest = first.1.max(second.1).max(third.1);
-        // Aligned to the largest exponent (cutting the bits shifted out, below 2^−27 of the
-        // largest product); three terms below 2^29 sum below 2^31.
-        let aligned = |(value, exponent): (i32, i32)| value >> ((largest - exponent) as u32).min(31);
+        // Halved and aligned to the largest exponent in one shift (cutting the bits shifted
+        // out, below 2^−27 of the largest product); three terms below 2^29 sum below 2^31.
+        // Products with a zero factor, common in axis-aligned transforms, have shifts far above
+        // 31, so each shift is clamped: clamp(0, 31) of the positive shift is one USAT.
+        let aligned = |(value, exponent): (i32, i32)| value >> (largest + 1 - exponent).clamp(0, 31);
         let sum = aligned(first) + aligned(second) + aligned(third);
         // sum · 2^(largest − 27) = sum · 2^((largest + 4) − 31).
-        normalise(sum < 0, sum.unsigned_abs(), largest + 4)
+        normalise(sum, largest + 4)
     }
 }
 
