@@ -9,6 +9,8 @@ use microtrace::number::Number;
 use microtrace::number::F32Micro;
 #[cfg(feature = "fixed-point")]
 use microtrace::number::{Fixed, Fixed16};
+#[cfg(feature = "soft-float")]
+use microtrace::number::SoftFloat;
 
 /// Deterministic xorshift64* generator.
 struct Rng(u64);
@@ -93,6 +95,10 @@ const FIXED_TOLERANCE: Tolerance = Tolerance { absolute: 0.500_001 / 4_294_967_2
 const FIXED16_TOLERANCE: Tolerance = Tolerance { absolute: 1.0 / 65_536.0, relative: 1e-15, sqrt_relative: 1e-15 };
 /// micromath's square root: up to 6.1 % (precision notes).
 const MICROMATH_TOLERANCE: Tolerance = Tolerance { absolute: 1e-44, relative: 6e-8, sqrt_relative: 0.062 };
+/// soft32: 28-bit mantissa; additions faithful (within one unit in the last place, 2⁻²⁷), the
+/// rest rounded to nearest (2⁻²⁸).
+#[cfg(feature = "soft-float")]
+const SOFT32_TOLERANCE: Tolerance = Tolerance { absolute: 1e-300, relative: 7.46e-9, sqrt_relative: 3.73e-9 };
 
 #[test]
 fn arithmetic_matches_f64_within_tolerance() {
@@ -105,6 +111,8 @@ fn arithmetic_matches_f64_within_tolerance() {
     }
     #[cfg(feature = "micromath")]
     check_arithmetic::<F32Micro>(MICROMATH_TOLERANCE);
+    #[cfg(feature = "soft-float")]
+    check_arithmetic::<SoftFloat>(SOFT32_TOLERANCE);
 }
 
 /// The trait's edge cases that every type must get right.
@@ -149,6 +157,8 @@ fn edge_cases_of_every_type() {
     }
     #[cfg(feature = "micromath")]
     check_edge_cases::<F32Micro>();
+    #[cfg(feature = "soft-float")]
+    check_edge_cases::<SoftFloat>();
 }
 
 /// Fixed point saturates instead of wrapping at the extremes.
@@ -235,6 +245,8 @@ fn big_vectors_do_not_overflow_wrongly() {
     }
     #[cfg(feature = "micromath")]
     check_big_vectors::<F32Micro>(0.062);
+    #[cfg(feature = "soft-float")]
+    check_big_vectors::<SoftFloat>(1.5e-8);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -350,6 +362,11 @@ fn ray_sphere_accuracy_benchmark() {
     }
     #[cfg(feature = "micromath")]
     sphere_row::<F32Micro>();
+    #[cfg(feature = "soft-float")]
+    {
+        let soft = sphere_row::<SoftFloat>();
+        assert!(soft.iter().all(|(flips, _)| *flips < 1e-4), "soft32: {soft:?}");
+    }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -450,6 +467,11 @@ fn compare_scenes(width: u16, height: u16) {
         }
         #[cfg(feature = "micromath")]
         compare::<F32Micro>(name, &description, &reference);
+        #[cfg(feature = "soft-float")]
+        {
+            let soft = compare::<SoftFloat>(name, &description, &reference);
+            assert!(soft.identical_fraction() >= 0.9995, "{name}: {soft:?}");
+        }
     }
 }
 

@@ -16,21 +16,25 @@ pub enum NumberType {
     /// f32 with micromath's fast approximate square root.
     #[value(name = "f32-micromath")]
     F32Micromath,
+    /// Software floating point for FPU-less cores: 28-bit mantissa, binary exponent.
+    #[value(name = "soft32")]
+    Soft32,
 }
 
 impl NumberType {
     pub const ALL: &'static [NumberType] =
-        &[NumberType::F64, NumberType::F32, NumberType::Fixed, NumberType::Fixed16, NumberType::F32Micromath];
+        &[NumberType::F64, NumberType::F32, NumberType::Fixed, NumberType::Fixed16, NumberType::F32Micromath, NumberType::Soft32];
 
     /// The command-line name, which is also the core type's `Number::NAME`.
     pub fn name(self) -> &'static str {
-        use microtrace::number::{Fixed, Fixed16, F32Micro, Number};
+        use microtrace::number::{Fixed, Fixed16, F32Micro, Number, SoftFloat};
         match self {
             NumberType::F64 => <f64 as Number>::NAME,
             NumberType::F32 => <f32 as Number>::NAME,
             NumberType::Fixed => Fixed::NAME,
             NumberType::Fixed16 => Fixed16::NAME,
             NumberType::F32Micromath => F32Micro::NAME,
+            NumberType::Soft32 => SoftFloat::NAME,
         }
     }
 }
@@ -60,6 +64,10 @@ macro_rules! with_number_type {
                 type $number = microtrace::number::F32Micro;
                 $body
             }
+            $crate::number_type::NumberType::Soft32 => {
+                type $number = microtrace::number::SoftFloat;
+                $body
+            }
         }
     };
 }
@@ -76,7 +84,7 @@ mod tests {
             assert_eq!(value.get_name(), number.name());
         }
         let names: Vec<&str> = NumberType::ALL.iter().map(|n| n.name()).collect();
-        assert_eq!(names, ["f64", "f32", "fixed", "fixed16", "f32-micromath"]);
+        assert_eq!(names, ["f64", "f32", "fixed", "fixed16", "f32-micromath", "soft32"]);
         assert_eq!(NumberType::value_variants().len(), NumberType::ALL.len());
     }
 }

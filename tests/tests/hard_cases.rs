@@ -10,16 +10,17 @@
 //!   different place, reported as `shadow edge`). The test also reports how many of those points the object's own surface would block if the
 //!   tracer did not skip the shaded object (`self-blocked`), i.e. the acne that skip prevents.
 //!
-//! Targets: no panic, no NaN, no wrap; `f32` ≥ 99.95% identical pixels and no acne; `fixed`
-//! no flips, ≥ 99.5% identical, no acne. A scene beyond a type's documented range must be
-//! rejected at preparation with the range error instead. `fixed16` and `f32-micromath` cannot
-//! meet the targets; for them the test asserts the measured bounds (with a small margin), listed
-//! per case below and in docs/hard-cases.md. Run with `--nocapture` to see the measurements;
-//! `HARD_CASE_DEBUG=<file>:<type>` also lists that case's differing pixels.
+//! Targets: no panic, no NaN, no wrap; `f32` and `soft32` ≥ 99.95% identical pixels and no
+//! acne; `fixed` no flips, ≥ 99.5% identical, no acne. A scene beyond a type's documented range
+//! must be rejected at preparation with the range error instead. `fixed16` and `f32-micromath`
+//! cannot meet the targets (nor `soft32` on two cases of exact ties); for them the test asserts
+//! the measured bounds (with a small margin), listed per case below and in docs/hard-cases.md.
+//! Run with `--nocapture` to see the measurements; `HARD_CASE_DEBUG=<file>:<type>` also lists
+//! that case's differing pixels.
 
 use microtrace::camera::PixelPosition;
 use microtrace::geometry::{Ray, Vector3};
-use microtrace::number::{F32Micro, Fixed, Fixed16, Number};
+use microtrace::number::{F32Micro, Fixed, Fixed16, Number, SoftFloat};
 use microtrace::parser::{SceneError, SceneErrorKind};
 use microtrace::pixel::FrameBuffer;
 use microtrace::render::{in_shadow, nearest_hit, render_pga, shade_pixel, shadow_origin, ShadedPixel, Statistics};
@@ -218,33 +219,39 @@ struct Case {
     fixed: Expect,
     fixed16: Expect,
     micromath: Expect,
+    /// `soft32` is held to `f32`'s targets.
+    soft32: Expect,
 }
 
 use Expect::{Measured, Rejected, Targets};
 
-/// The cases; fixed16 and f32-micromath bounds are the measured worst with a margin.
+/// The cases; fixed16 and f32-micromath bounds (and soft32's on the two tie cases) are the
+/// measured worst with a margin.
 const CASES: &[Case] = &[
-    Case { file: "grazing_silhouettes.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.00149, 0.992, 0.0005, 0.0068)), micromath: Measured(bound(0.000653, 0.942, 0.0005, 0.166)) },
-    Case { file: "small_far_sphere_1e-3.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.00477, 0.755, 0.0005, 2.0)), micromath: Measured(bound(0.0005, 0.943, 0.0005, 0.001)) },
-    Case { file: "small_far_sphere_1e-4.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.0345, 0.847, 0.0005, 2.0)), micromath: Measured(bound(0.0005, 0.798, 0.0005, 0.04)) },
-    Case { file: "large_coordinates.mts", f32: Targets, fixed: Targets, fixed16: Rejected, micromath: Measured(bound(0.0005, 0.965, 0.0005, 0.05)) },
-    Case { file: "small_beside_large.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.0005, 0.918, 0.0005, 1.86)), micromath: Measured(bound(0.0005, 0.042, 0.0005, 0.05)) },
-    Case { file: "cylinder_parallel_axis.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.0005, 0.994, 0.0005, 0.001)), micromath: Measured(bound(0.0005, 0.723, 0.0005, 0.001)) },
-    Case { file: "cone_parallel_side.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.0005, 0.994, 0.0005, 0.001)), micromath: Measured(bound(0.0005, 0.93, 0.0005, 0.001)) },
-    Case { file: "cone_apex.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.0005, 0.994, 0.0005, 0.001)), micromath: Measured(bound(0.0005, 0.945, 0.0005, 0.015)) },
-    Case { file: "cube_edges_corners.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.000575, 0.994, 0.0005, 0.001)), micromath: Measured(bound(0.0005, 0.978, 0.0005, 0.001)) },
-    Case { file: "zero_direction_components.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.000653, 0.994, 0.0005, 0.001)), micromath: Measured(bound(0.0005, 0.989, 0.0005, 0.008)) },
-    Case { file: "eye_inside.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.0005, 0.992, 0.0005, 0.0026)), micromath: Measured(bound(0.0005, 0.074, 0.0005, 1.1)) },
-    Case { file: "touching.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.000653, 0.993, 0.0005, 0.0022)), micromath: Measured(bound(0.0005, 0.898, 0.0005, 0.042)) },
-    Case { file: "interpenetrating.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.000958, 0.992, 0.0005, 0.0052)), micromath: Measured(bound(0.000653, 0.908, 0.0005, 0.038)) },
-    Case { file: "coincident.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.0005, 0.994, 0.0005, 0.00108)), micromath: Measured(bound(0.0005, 0.863, 0.0005, 0.0138)) },
-    Case { file: "near_singular.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.0145, 0.969, 0.0005, 2.0)), micromath: Measured(bound(0.0005, 0.98, 0.0005, 0.028)) },
-    Case { file: "specular_power.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.0005, 0.994, 0.0005, 0.00172)), micromath: Measured(bound(0.0005, 0.938, 0.0005, 0.019)) },
-    Case { file: "far_from_origin.mts", f32: Targets, fixed: Targets, fixed16: Rejected, micromath: Measured(bound(0.0005, 0.922, 0.000712, 0.042)) },
+    Case { file: "grazing_silhouettes.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.00149, 0.992, 0.0005, 0.0068)), micromath: Measured(bound(0.000653, 0.942, 0.0005, 0.166)), soft32: Targets },
+    Case { file: "small_far_sphere_1e-3.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.00477, 0.755, 0.0005, 2.0)), micromath: Measured(bound(0.0005, 0.943, 0.0005, 0.001)), soft32: Targets },
+    Case { file: "small_far_sphere_1e-4.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.0345, 0.847, 0.0005, 2.0)), micromath: Measured(bound(0.0005, 0.798, 0.0005, 0.04)), soft32: Targets },
+    Case { file: "large_coordinates.mts", f32: Targets, fixed: Targets, fixed16: Rejected, micromath: Measured(bound(0.0005, 0.965, 0.0005, 0.05)), soft32: Targets },
+    Case { file: "small_beside_large.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.0005, 0.918, 0.0005, 1.86)), micromath: Measured(bound(0.0005, 0.042, 0.0005, 0.05)), soft32: Targets },
+    Case { file: "cylinder_parallel_axis.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.0005, 0.994, 0.0005, 0.001)), micromath: Measured(bound(0.0005, 0.723, 0.0005, 0.001)), soft32: Targets },
+    Case { file: "cone_parallel_side.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.0005, 0.994, 0.0005, 0.001)), micromath: Measured(bound(0.0005, 0.93, 0.0005, 0.001)), soft32: Targets },
+    Case { file: "cone_apex.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.0005, 0.994, 0.0005, 0.001)), micromath: Measured(bound(0.0005, 0.945, 0.0005, 0.015)), soft32: Targets },
+    Case { file: "cube_edges_corners.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.000575, 0.994, 0.0005, 0.001)), micromath: Measured(bound(0.0005, 0.978, 0.0005, 0.001)), soft32: Measured(bound(0.000125, 0.9985, 0.0005, 0.001)) },
+    Case { file: "zero_direction_components.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.000653, 0.994, 0.0005, 0.001)), micromath: Measured(bound(0.0005, 0.989, 0.0005, 0.008)), soft32: Targets },
+    Case { file: "eye_inside.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.0005, 0.992, 0.0005, 0.0026)), micromath: Measured(bound(0.0005, 0.074, 0.0005, 1.1)), soft32: Targets },
+    Case { file: "touching.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.000653, 0.993, 0.0005, 0.0022)), micromath: Measured(bound(0.0005, 0.898, 0.0005, 0.042)), soft32: Targets },
+    Case { file: "interpenetrating.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.000958, 0.992, 0.0005, 0.0052)), micromath: Measured(bound(0.000653, 0.908, 0.0005, 0.038)), soft32: Targets },
+    Case { file: "coincident.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.0005, 0.994, 0.0005, 0.00108)), micromath: Measured(bound(0.0005, 0.863, 0.0005, 0.0138)), soft32: Targets },
+    Case { file: "near_singular.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.0145, 0.969, 0.0005, 2.0)), micromath: Measured(bound(0.0005, 0.98, 0.0005, 0.028)), soft32: Targets },
+    Case { file: "specular_power.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.0005, 0.994, 0.0005, 0.00172)), micromath: Measured(bound(0.0005, 0.938, 0.0005, 0.019)), soft32: Targets },
+    Case { file: "far_from_origin.mts", f32: Targets, fixed: Targets, fixed16: Rejected, micromath: Measured(bound(0.0005, 0.922, 0.000712, 0.042)), soft32: Targets },
     // Exact ties under inexact transforms: decided by the last bit in every type (f64 too), so
-    // measured for every type, f32 and fixed included (docs/hard-cases.md).
-    Case { file: "exact_ties.mts", f32: Measured(bound(0.0055, 0.99, 0.0005, 0.001)), fixed: Measured(bound(0.0165, 0.981, 0.0005, 0.001)), fixed16: Measured(bound(0.0165, 0.98, 0.0005, 0.001)), micromath: Measured(bound(0.0055, 0.798, 0.0005, 0.001)) },
-    Case { file: "shadow_acne.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.000653, 0.983, 0.0005, 0.32)), micromath: Measured(bound(0.00103, 0.969, 0.0005, 0.104)) },
+    // measured for every type, f32 and fixed included (docs/hard-cases.md). soft32 is measured
+    // on cube_edges_corners too: the rotated cube's edge lies exactly on a row of samples, so
+    // which face a ray enters there is such a tie (f32 picks f64's face on half of that row,
+    // soft32 on none of it: 15 pixels in all).
+    Case { file: "exact_ties.mts", f32: Measured(bound(0.0055, 0.99, 0.0005, 0.001)), fixed: Measured(bound(0.0165, 0.981, 0.0005, 0.001)), fixed16: Measured(bound(0.0165, 0.98, 0.0005, 0.001)), micromath: Measured(bound(0.0055, 0.798, 0.0005, 0.001)), soft32: Measured(bound(0.0065, 0.992, 0.0005, 0.001)) },
+    Case { file: "shadow_acne.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.000653, 0.983, 0.0005, 0.32)), micromath: Measured(bound(0.00103, 0.969, 0.0005, 0.104)), soft32: Targets },
 ];
 
 /// Renders `case` in `N`, checks what `expect` asks against the `f64` reference, and returns a
@@ -309,7 +316,7 @@ fn check<N: Number>(file: &str, description: &SceneDescription<CAPACITY>, refere
                 fail(format!("{} hit/miss flips", m.flips));
             }
             // A wrap-around or a saturated intermediate would put the hit somewhere else.
-            let depth_limit = if name == "fixed" || name == "f32" { 1e-3 } else { 0.0 };
+            let depth_limit = if name == "fixed" || name == "f32" || name == "soft32" { 1e-3 } else { 0.0 };
             if m.depth_error > depth_limit && name != "f64" {
                 fail(format!("depth error {:.1e}", m.depth_error));
             }
@@ -347,6 +354,7 @@ fn hard_cases_in_every_number_type() {
         report.push(check::<Fixed>(case.file, &description, &reference, case.fixed, &mut failures));
         report.push(check::<Fixed16>(case.file, &description, &reference, case.fixed16, &mut failures));
         report.push(check::<F32Micro>(case.file, &description, &reference, case.micromath, &mut failures));
+        report.push(check::<SoftFloat>(case.file, &description, &reference, case.soft32, &mut failures));
     }
     for line in &report {
         println!("{line}");

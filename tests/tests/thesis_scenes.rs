@@ -1,9 +1,10 @@
 //! Both thesis scenes render, and single precision agrees with double precision on at least
 //! 99.9% of pixels at the thesis's own sizes. The targets for the other number types, at
 //! 528x480 and at the OLED's 128x64: `f32` ≥ 99.95% of pixels identical to `f64`; Q32.32
-//! `fixed` ≥ 99.5% identical, no pixel more than one shade step away and no speckles.
+//! `fixed` ≥ 99.5% identical, no pixel more than one shade step away and no speckles; `soft32`
+//! (software floating point) is held to `f32`'s target.
 
-use microtrace::number::{Fixed, Number};
+use microtrace::number::{Fixed, Number, SoftFloat};
 use microtrace::pixel::FrameBuffer;
 use microtrace::render::{render_pga, Statistics};
 use microtrace::scene::{Scene, SceneDescription};
@@ -104,14 +105,19 @@ fn targets_at_size(name: &str, width: u16, height: u16) {
     let single = compare(&reference, &single, size_w, size_h);
     let (fixed, _) = render::<Fixed>(&description);
     let fixed = compare(&reference, &fixed, size_w, size_h);
+    let (soft, _) = render::<SoftFloat>(&description);
+    let soft = compare(&reference, &soft, size_w, size_h);
     println!(
-        "{name} {width}x{height}: f32 {:.4}% identical; fixed {:.4}% identical, {} beyond one shade, {} speckles",
+        "{name} {width}x{height}: f32 {:.4}% identical; fixed {:.4}% identical, {} beyond one shade, {} speckles; soft32 {:.4}% identical",
         single.identical * 100.0,
         fixed.identical * 100.0,
         fixed.beyond_one_shade,
-        fixed.speckles
+        fixed.speckles,
+        soft.identical * 100.0
     );
     assert!(single.identical >= 0.9995, "{name} {width}x{height}: f32 {:.4}% identical", single.identical * 100.0);
+    // soft32 is held to f32's target.
+    assert!(soft.identical >= 0.9995, "{name} {width}x{height}: soft32 {:.4}% identical", soft.identical * 100.0);
     assert!(fixed.identical >= 0.995, "{name} {width}x{height}: fixed {:.4}% identical", fixed.identical * 100.0);
     assert_eq!(fixed.beyond_one_shade, 0, "{name} {width}x{height}: fixed pixels more than one shade from f64");
     assert_eq!(fixed.speckles, 0, "{name} {width}x{height}: fixed speckles");

@@ -443,6 +443,34 @@ fn write_summary(report: &mut String, results: &[CaseResult], firmware: &Firmwar
         "| Cortex-M3: fixed needs ≥ {CORTEX_M3_FIXED_SPEEDUP}x fewer instructions per pixel than f32 (128x64, thesis scenes) | {measured} | {} |",
         verdict(speedup_met)
     )?;
+    // soft32, the software floating point, against f32's accuracy target and the same speed
+    // target, with the scene's optimizations and with all of them off.
+    let soft = differences(NumberType::Soft32);
+    writeln!(
+        report,
+        "| soft32 (software floating point): f32's target, ≥ {F32_IDENTICAL_PERCENT} % identical to f64 on both thesis scenes, both sizes | {} | {} |",
+        list(&soft, &identical),
+        verdict(all_met(&soft, &|d| d.percent_identical() >= F32_IDENTICAL_PERCENT))
+    )?;
+    let soft_speedups: Vec<(String, Option<InstructionRatio>)> = [(Build::SceneOptimizations, "scene's optimizations"), (Build::OptimizationsOff, "optimizations off")]
+        .into_iter()
+        .flat_map(|(build, label)| stems.iter().map(move |stem| (build, label, *stem)))
+        .map(|(build, label, stem)| (format!("{stem}, {label}"), ratio_in(build, stem, "soft32")))
+        .collect();
+    let soft_measured = soft_speedups
+        .iter()
+        .map(|(label, r)| match r {
+            Some(r) => format!("{label}: f32 {} / soft32 {} = {:.2}x", r.f32, r.other, r.ratio),
+            None => format!("{label}: no entry in {}", firmware_path.display()),
+        })
+        .collect::<Vec<_>>()
+        .join("; ");
+    let soft_speedup_met = soft_speedups.iter().map(|(_, r)| r.map(|r| r.ratio >= CORTEX_M3_FIXED_SPEEDUP)).collect::<Option<Vec<bool>>>();
+    writeln!(
+        report,
+        "| Cortex-M3: soft32 needs ≥ {CORTEX_M3_FIXED_SPEEDUP}x fewer instructions per pixel than f32 (128x64, thesis scenes) | {soft_measured} | {} |",
+        verdict(soft_speedup_met.map(|v| v.iter().all(|ok| *ok)))
+    )?;
     writeln!(report)?;
     write_accuracy_overview(report, &thesis)?;
     // Plain words for what is not met.
@@ -563,6 +591,10 @@ fn write_number_types(report: &mut String) -> anyhow::Result<()> {
                 "64-bit intermediate products; cheapest on Cortex-M3, but unit directions keep only 16 fraction bits",
             ),
             NumberType::F32Micromath => ("IEEE binary32", "micromath's approximate square root (up to 6 % error)"),
+            NumberType::Soft32 => (
+                "28-bit mantissa and binary exponent in two i32 (software floating point)",
+                "for FPU-less targets: no NaN, infinity or denormals; saturates; products by one 32x32 multiply, sums and dot products in 32-bit registers",
+            ),
         };
         writeln!(report, "| `{}` | {representation} | {} | {notes} |", number.name(), scene_limit(number))?;
     }

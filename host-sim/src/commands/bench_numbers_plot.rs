@@ -34,6 +34,7 @@ fn number_colour(number: &str) -> RGBColor {
         "f32" => RGBColor(31, 119, 180),
         "fixed" => RGBColor(214, 39, 40),
         "fixed16" => RGBColor(255, 127, 14),
+        "soft32" => RGBColor(148, 103, 189),
         _ => RGBColor(44, 160, 44),
     }
 }

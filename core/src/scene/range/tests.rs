@@ -35,6 +35,8 @@ fn an_ordinary_scene_prepares_in_every_type() {
     assert_eq!(prepare::<f32>(&text), Ok(()));
     assert_eq!(prepare::<Fixed>(&text), Ok(()));
     assert_eq!(prepare::<Fixed16>(&text), Ok(()));
+    #[cfg(feature = "soft-float")]
+    assert_eq!(prepare::<crate::number::SoftFloat>(&text), Ok(()));
 }
 
 #[test]
@@ -46,6 +48,8 @@ fn a_far_object_names_its_line_and_the_limit() {
     assert!(rejection::<Fixed>(&text).1.contains("bounding volume"));
     assert_eq!(prepare::<f32>(&text), Ok(()));
     assert_eq!(prepare::<f64>(&text), Ok(()));
+    #[cfg(feature = "soft-float")]
+    assert_eq!(prepare::<crate::number::SoftFloat>(&text), Ok(()));
     // 20 000 fits fixed but not fixed16.
     let text = std::format!("{CAMERA}sphere\n  translate 20000 0 0\n");
     assert_eq!(prepare::<Fixed>(&text), Ok(()));
