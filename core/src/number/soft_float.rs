@@ -138,36 +138,40 @@ fn normalise(value: i32, exponent: i32) -> SoftFloat {
     from_signed(mantissa, exponent - leading as i32)
 }
 
-/// `(high·2³² + low) / divisor` for a divisor with its top bit set and `high < divisor`, so
-/// the quotient fits 32 bits: Hacker's Delight's `divlu` (Warren, 2nd ed., fig. 9-3), two
-/// 16-bit quotient digits from the 32-bit hardware `UDIV` (Cortex-M3 has no 64-bit division).
-/// The same algorithm as fixed.rs's; all intermediate values fit `u32` as the algorithm
-/// guarantees, the wrapping operations only keep debug builds from checking that.
+/// `(⌊dividend·2²⁴ / divisor⌋, remainder)` for a divisor in [2²⁷, 2²⁸) and a quotient below
+/// 2²⁸, from a reciprocal: a 16-bit estimate of 2⁴⁴/divisor by one 32-bit `UDIV` of the
+/// divisor's top 16 bits, one Newton step to 2⁵⁶/divisor (error ε → ε², 2⁻¹⁵ → 2⁻³⁰: within 3
+/// units), the quotient from one `UMULL` by it (within 4), and a correction by the remainder.
+/// (Goldschmidt and Newton–Raphson division: Muller et al., Handbook of Floating-Point
+/// Arithmetic, 2nd ed., §4.5, §5.3.)
 #[inline]
-fn divide_64_by_32(high: u32, low: u32, divisor: u32) -> u32 {
-    const BASE: u32 = 1 << 16;
-    let (divisor_high, divisor_low) = (divisor >> 16, divisor & 0xFFFF); // divisor_high ≥ 2^15
-    let (low_high, low_low) = (low >> 16, low & 0xFFFF);
-    let mut digit_high = high / divisor_high;
-    let mut remainder = high - digit_high * divisor_high;
-    while digit_high >= BASE || digit_high * divisor_low > BASE * remainder + low_high {
-        digit_high -= 1;
-        remainder += divisor_high;
-        if remainder >= BASE {
-            break;
-        }
+fn divide_by_reciprocal(dividend: u32, divisor: u32) -> (u32, u32) {
+    // The top 16 bits, at least 2^15 (setting that bit again tells the compiler it is not
+    // zero, so the division needs no check).
+    let top = (divisor >> 12) | (1 << 15);
+    // 2^44/divisor·(1 + ε) with 0 ≤ ε < 2^−15 + 2^−16: top·2^12 ≤ divisor < (top + 1)·2^12.
+    let estimate = u32::MAX / top; // (2^16, 2^17]
+    // 2^44 − divisor·estimate = −2^44·ε: |error| < 2^30.
+    let error = ((1i64 << 44) - i64::from(divisor) * i64::from(estimate)) as i32;
+    // estimate·2^12·(1 − ε) = 2^56/divisor·(1 − ε²), less the floor of the correction: within
+    // 3 units below 2^56/divisor ≤ 2^29.
+    let correction = ((i64::from(estimate) * i64::from(error)) >> 32) as i32;
+    let reciprocal = (estimate << 12).wrapping_add(correction as u32);
+    // dividend·reciprocal/2^32 is within 4 of the quotient (dividend < 2^32).
+    let mut quotient = ((u64::from(dividend) * u64::from(reciprocal)) >> 32) as u32;
+    // The remainder of that estimate lies within ±4 divisors (below 2^31), so the low words of
+    // dividend·2^24 and quotient·divisor give it exactly.
+    let mut remainder = (dividend << 24).wrapping_sub(quotient.wrapping_mul(divisor)) as i32;
+    let divisor = divisor as i32;
+    while remainder < 0 {
+        quotient -= 1;
+        remainder += divisor;
     }
-    let partial = high.wrapping_mul(BASE).wrapping_add(low_high).wrapping_sub(digit_high.wrapping_mul(divisor));
-    let mut digit_low = partial / divisor_high;
-    let mut remainder = partial - digit_low * divisor_high;
-    while digit_low >= BASE || digit_low * divisor_low > BASE * remainder + low_low {
-        digit_low -= 1;
-        remainder += divisor_high;
-        if remainder >= BASE {
-            break;
-        }
+    while remainder >= divisor {
+        quotient += 1;
+        remainder -= divisor;
     }
-    digit_high.wrapping_mul(BASE).wrapping_add(digit_low)
+    (quotient, remainder as u32)
 }
 
 /// `⌊√radicand⌋` for a radicand in [2⁵⁴, 2⁵⁶): a 16-bit root of the radicand's top 32 bits
@@ -388,21 +392,13 @@ impl Number for SoftFloat {
         }
         let negative = (self.mantissa ^ divisor.mantissa) < 0;
         let (dividend, divisor_magnitude) = (self.mantissa.unsigned_abs(), divisor.mantissa.unsigned_abs());
-        // Divide by divisor·2^4 (top bit set, as the 64-by-32 division needs) a dividend scaled
-        // so that the quotient lies in [2^27, 2^28): dividend·2^31 when the ratio is in [1, 2),
-        // dividend·2^32 when it is in (½, 1). The high word stays below the divisor.
-        let normalised_divisor = divisor_magnitude << 4;
+        // The dividend scaled so that the quotient lies in [2^27, 2^28): dividend·2^27 when the
+        // ratio is in [1, 2), dividend·2^28 when it is in (½, 1), as (dividend·2^3 or ·2^4)·2^24.
         let exponent = self.exponent - divisor.exponent;
-        let (high, low, exponent) = if dividend >= divisor_magnitude {
-            (dividend >> 1, dividend << 31, exponent)
-        } else {
-            (dividend, 0, exponent - 1)
-        };
-        let quotient = divide_64_by_32(high, low, normalised_divisor);
-        // The remainder is below the divisor, so its low word is all of it.
-        let remainder = low.wrapping_sub(quotient.wrapping_mul(normalised_divisor));
+        let (scaled, exponent) = if dividend >= divisor_magnitude { (dividend << 3, exponent) } else { (dividend << 4, exponent - 1) };
+        let (quotient, remainder) = divide_by_reciprocal(scaled, divisor_magnitude);
         // Round half away from zero: remainder ≥ divisor/2.
-        let rounded = quotient + u32::from(remainder >= normalised_divisor - remainder);
+        let rounded = quotient + u32::from(remainder >= divisor_magnitude - remainder);
         Some(from_rounded(negative, rounded, exponent))
     }
 

@@ -7,7 +7,7 @@ extern crate std;
 use std::format;
 use std::vec::Vec;
 
-use super::{integer_square_root, SoftFloat, MAX_EXPONENT, MIN_EXPONENT};
+use super::{divide_by_reciprocal, integer_square_root, SoftFloat, MAX_EXPONENT, MIN_EXPONENT};
 use crate::number::Number;
 use core::cmp::Ordering;
 
@@ -265,5 +265,29 @@ fn integer_square_roots_are_floors() {
                 check(candidate);
             }
         }
+    }
+}
+
+#[test]
+fn mantissa_division_is_exact() {
+    let mut random = Random(5);
+    let check = |dividend: u32, divisor: u32| {
+        let numerator = u64::from(dividend) << 24;
+        let expected = ((numerator / u64::from(divisor)) as u32, (numerator % u64::from(divisor)) as u32);
+        assert_eq!(divide_by_reciprocal(dividend, divisor), expected, "{dividend} / {divisor}");
+    };
+    // The divisor in [2^27, 2^28); the dividend as checked_div scales it (·2^3 when at least the
+    // divisor, ·2^4 when below), so the quotient is below 2^28.
+    let edges = [1 << 27, (1 << 27) + 1, (1 << 27) + (1 << 12) - 1, (1 << 27) + (1 << 12), 3 << 26, (1 << 28) - (1 << 12), (1 << 28) - 1];
+    for &divisor in &edges {
+        for &dividend in &edges {
+            check(if dividend >= divisor { dividend << 3 } else { dividend << 4 }, divisor);
+        }
+    }
+    for _ in 0..1_000_000 {
+        let bits = random.next();
+        let divisor = (1 << 27) | (bits as u32 & ((1 << 27) - 1));
+        let dividend = (1 << 27) | ((bits >> 32) as u32 & ((1 << 27) - 1));
+        check(if dividend >= divisor { dividend << 3 } else { dividend << 4 }, divisor);
     }
 }
