@@ -295,7 +295,8 @@ fn aligned_sum(larger: SoftFloat, smaller: SoftFloat, difference: u32) -> SoftFl
 
 impl Sub for SoftFloat {
     type Output = Self;
-    #[inline]
+    /// Always inlined, as the addition.
+    #[inline(always)]
     fn sub(self, other: Self) -> Self {
         self + -other
     }
