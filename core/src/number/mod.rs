@@ -1,9 +1,10 @@
 //! The number type the tracer computes in.
 //!
 //! Everything from ray generation to shading is generic over [`Number`], so the same code runs
-//! in `f64` (the reference), `f32`, or fixed point on a microcontroller without an FPU. The
-//! trait avoids anything a fixed-point type cannot do: there are no infinities or NaNs, a
-//! division states what happens when the divisor is zero, and powers are integer powers.
+//! in `f64` (the reference), `f32`, or, on a microcontroller without an FPU, fixed point or a
+//! lean software floating point (`SoftFloat`). The trait avoids anything a fixed-point type
+//! cannot do: there are no infinities or NaNs, a division states what happens when the
+//! divisor is zero, and powers are integer powers.
 //! Scene set-up (matrix composition, inversion, trigonometry) is done once in `f64` and
 //! converted with [`Number::from_f64`]; only per-pixel work runs in the number type.
 

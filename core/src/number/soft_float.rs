@@ -23,6 +23,13 @@
 //! aligns them before one final rounding: its error is within about 2⁻²⁶ of the largest
 //! product, where `f32`'s is within about 2⁻²³.
 //!
+//! Measured on Cortex-M3 (QEMU lm3s6965evb, instruction-count plugin, `opt-level = "s"`, LTO;
+//! per operation including the call where there is one): add/sub about 30 out of line (now
+//! always inlined, about 25), mul about 16 (inlined), dot3 about 55 inlined and 71 with the
+//! transform's column gathering and call, div 61, sqrt 80. Software `f32` there: add 77,
+//! mul 48, dot3 ≈ 320, div 178, sqrt 172 (fixed.rs). Per pixel, snooker at 128x64 with every
+//! optimization off: `f32` 84 262, `fixed` 55 413, `soft32` 30 597 instructions.
+//!
 //! Nothing here can panic: every shift amount is bounded and every intermediate fits its
 //! integer type (the comments say why).
 
