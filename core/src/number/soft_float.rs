@@ -448,8 +448,9 @@ impl Number for SoftFloat {
         Self { mantissa: self.mantissa.abs(), exponent: self.exponent }
     }
 
-    /// The three products, each exact (`SMULL`) and then cut to 29 bits, aligned and summed in
-    /// an `i32`, then rounded once: one normalisation instead of five, all in 32-bit registers.
+    /// The three products, each exact (`SMULL`) and then rounded to 29 bits, aligned and summed
+    /// in an `i32`, then rounded once: one normalisation instead of five, all in 32-bit
+    /// registers.
     /// Inlined where LLVM sees fit: the callers gather columns into arrays, which inlining
     /// turns into registers.
     #[inline]
