@@ -8,8 +8,11 @@ use crate::number::Number;
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct AffineTransform<N> {
-    /// `linear[r][c]`, row-vector convention: `p' = p · linear + translation`.
-    pub linear: [[N; 3]; 3],
+    /// The linear part stored by columns, `columns[c][r]` = `linear[r][c]` in the row-vector
+    /// convention `p' = p · linear + translation`: each component of a transformed vector is then
+    /// one `dot3` with a stored column, with nothing gathered (ray directions and origins are
+    /// transformed once per ray–object test; normals, which need rows, once per hit).
+    columns: [[N; 3]; 3],
     pub translation: [N; 3],
 }
 
@@ -17,16 +20,21 @@ impl<N: Number> AffineTransform<N> {
     pub fn from_matrix(matrix: &Matrix4) -> Self {
         let m = &matrix.rows;
         Self {
-            linear: core::array::from_fn(|r| core::array::from_fn(|c| N::from_f64(m[r][c]))),
+            columns: core::array::from_fn(|c| core::array::from_fn(|r| N::from_f64(m[r][c]))),
             translation: core::array::from_fn(|c| N::from_f64(m[3][c])),
         }
     }
 
+    /// `linear[row][column]` of the row-vector convention.
+    pub fn linear(&self, row: usize, column: usize) -> N {
+        self.columns[column][row]
+    }
+
     /// `transformvector`: `v · linear`.
     pub fn vector(&self, v: Vector3<N>) -> Vector3<N> {
-        let m = &self.linear;
-        let column = |c: usize| N::dot3([v.x, v.y, v.z], [m[0][c], m[1][c], m[2][c]]);
-        Vector3::new(column(0), column(1), column(2))
+        let v = [v.x, v.y, v.z];
+        let c = &self.columns;
+        Vector3::new(N::dot3(v, c[0]), N::dot3(v, c[1]), N::dot3(v, c[2]))
     }
 
     /// `transformpoint`: `p · linear + translation`.
@@ -44,8 +52,8 @@ impl<N: Number> AffineTransform<N> {
     /// `linear · v` (a column vector): with `self` = object_from_world this takes an object
     /// normal to world space through the inverse transpose of world_from_object.
     pub fn transposed_vector(&self, v: Vector3<N>) -> Vector3<N> {
-        let m = &self.linear;
-        let row = |r: usize| N::dot3(m[r], [v.x, v.y, v.z]);
+        let c = &self.columns;
+        let row = |r: usize| N::dot3([c[0][r], c[1][r], c[2][r]], [v.x, v.y, v.z]);
         Vector3::new(row(0), row(1), row(2))
     }
 }

@@ -88,7 +88,7 @@ impl ObjectGeometry {
         let mut rows = [[0.0; 4]; 4];
         for (r, row) in rows.iter_mut().enumerate().take(3) {
             for c in 0..3 {
-                row[c] = object_from_world.linear[r][c].to_f64();
+                row[c] = object_from_world.linear(r, c).to_f64();
             }
         }
         for c in 0..3 {
