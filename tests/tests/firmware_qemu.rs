@@ -6,7 +6,9 @@
 //!   with the same acceleration structures (`acceleration-tables`);
 //! - on the lm3s6965evb, the OLED picture captured from QEMU (`oled.png`) is that framebuffer
 //!   through the palette's `luminance()`;
-//! - the lm3s6965evb builds stay within the memory budget of firmware/README.md.
+//! - the lm3s6965evb builds stay within the memory budget of firmware/README.md;
+//! - and in the integer number types too: the lattice in Q32.32 on the lm3s6965evb and snooker
+//!   in `soft32` on the mps2-an386 equal the host's render in the same type.
 //!
 //! Each test builds the firmware (release, a few seconds) and runs it; xtask installs QEMU and
 //! the rust targets when they are missing.
@@ -32,12 +34,17 @@ fn scene_path(name: &str) -> PathBuf {
 
 /// The host's render of the scene at the display's size, in `f32`.
 fn host_render(name: &str) -> (SceneDescription<CAPACITY>, Vec<u8>, Statistics) {
+    host_render_in::<f32>(name)
+}
+
+/// The host's render of the scene at the display's size, in the number type `N`.
+fn host_render_in<N: microtrace::number::Number>(name: &str) -> (SceneDescription<CAPACITY>, Vec<u8>, Statistics) {
     let path = scene_path(name);
     let text = std::fs::read(&path).unwrap();
     let mut description =
         microtrace::parser::parse::<CAPACITY>(&text).unwrap_or_else(|error| panic!("{}: {error}", path.display()));
     description.fit_to_size(WIDTH, HEIGHT);
-    let scene = Scene::<f32, CAPACITY>::prepare(&description).unwrap();
+    let scene = Scene::<N, CAPACITY>::prepare(&description).unwrap();
     let mut pixels = vec![0u8; WIDTH as usize * HEIGHT as usize];
     let mut frame = FrameBuffer::new(&mut pixels, WIDTH, HEIGHT).unwrap();
     let mut statistics = Statistics::default();
@@ -130,6 +137,30 @@ fn a_bad_scene_fails_with_the_parsers_message() {
     let options = FirmwareOptions::new(&scene, Board::Lm3s6965evb, "f32", directory.join("bad-out"));
     let error = firmware::run(&options).unwrap_err();
     assert!(error.contains("bad.mts") && error.contains("line 3"), "unexpected error: {error}");
+}
+
+/// The integer number types run the same core on the firmware: the framebuffer equals the
+/// host's render in that type, byte for byte, and so do the statistics.
+fn firmware_matches_host_in<N: microtrace::number::Number>(name: &str, board: Board) {
+    let (_, expected, statistics) = host_render_in::<N>(name);
+    let stem = name.trim_end_matches(".mts");
+    let out = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("firmware").join(format!("{}-{stem}-{}", board.name(), N::NAME));
+    let options = FirmwareOptions::new(scene_path(name), board, N::NAME, out);
+    let run = firmware::run(&options).unwrap_or_else(|error| panic!("{name} on {} in {}: {error}", board.name(), N::NAME));
+    let framebuffer = std::fs::read(&run.framebuffer).unwrap();
+    assert_eq!(framebuffer, expected, "{name} on {} in {}: the framebuffer differs from the host render", board.name(), N::NAME);
+    assert_eq!(run.numbers["ro_tests"], statistics.ro_tests);
+    assert_eq!(run.numbers["shadow_tests"], statistics.shadow_tests);
+}
+
+#[test]
+fn lattice_in_fixed_point_on_lm3s6965evb_matches_the_host() {
+    firmware_matches_host_in::<microtrace::number::Fixed>("lattice.mts", Board::Lm3s6965evb);
+}
+
+#[test]
+fn snooker_in_soft32_on_mps2_an386_matches_the_host() {
+    firmware_matches_host_in::<microtrace::number::SoftFloat>("snooker.mts", Board::Mps2An386);
 }
 
 /// The real-board example (Raspberry Pi Pico + SSD1306) keeps compiling against the core.
