@@ -97,19 +97,8 @@ fn check_scene(binary: &Path, display: &str, scene: &str, extra: &[&str]) {
     let dir = std::env::temp_dir().join(format!("microtrace-view-{}-{scene}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let scene_path = workspace().join("scenes").join(format!("{scene}.mts"));
-    let shot = dir.join("window.png");
     let reference = dir.join("render.png");
-    let output = Command::new(binary)
-        .arg("view")
-        .arg(&scene_path)
-        .args(["--size", "132x120", "--screenshot"])
-        .arg(&shot)
-        .args(extra)
-        .env("DISPLAY", display)
-        .output()
-        .expect("run microtrace view");
-    assert!(output.status.success(), "microtrace view failed: {}", String::from_utf8_lossy(&output.stderr));
-    let stderr = String::from_utf8_lossy(&output.stderr);
+    let ((window_width, window_height, window), stderr) = screenshot_and_stderr(binary, display, scene, extra);
     assert!(stderr.contains("rays traced") && stderr.contains("trace"), "statistics not printed: {stderr}");
     let status = Command::new(binary)
         .arg("render")
@@ -121,7 +110,6 @@ fn check_scene(binary: &Path, display: &str, scene: &str, extra: &[&str]) {
         .expect("run microtrace render");
     assert!(status.success());
     let (width, height, expected) = read_png(&reference);
-    let (window_width, window_height, window) = read_png(&shot);
     assert!(window_width > width && window_height >= height, "window {window_width}x{window_height} smaller than the image");
     let mut differing = 0;
     for y in 0..height {
@@ -150,7 +138,15 @@ fn window_shows_the_same_image_as_render() {
 /// Runs `microtrace view SCENE --size 132x120 --screenshot` with `extra` and returns the
 /// screenshot.
 fn screenshot(binary: &Path, display: &str, scene: &str, extra: &[&str]) -> (u32, u32, Vec<[u8; 3]>) {
-    let dir = std::env::temp_dir().join(format!("microtrace-view-{}-{scene}-{}", std::process::id(), extra.join("")));
+    screenshot_and_stderr(binary, display, scene, extra).0
+}
+
+/// [`screenshot`], with what `view` printed on stderr.
+fn screenshot_and_stderr(binary: &Path, display: &str, scene: &str, extra: &[&str]) -> ((u32, u32, Vec<[u8; 3]>), String) {
+    // One directory per call: tests run in parallel and may take the same screenshot.
+    static CALLS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let call = CALLS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let dir = std::env::temp_dir().join(format!("microtrace-view-{}-shot-{call}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let shot = dir.join("window.png");
     let output = Command::new(binary)
@@ -165,7 +161,7 @@ fn screenshot(binary: &Path, display: &str, scene: &str, extra: &[&str]) -> (u32
     assert!(output.status.success(), "microtrace view failed: {}", String::from_utf8_lossy(&output.stderr));
     let image = read_png(&shot);
     let _ = std::fs::remove_dir_all(&dir);
-    image
+    (image, String::from_utf8_lossy(&output.stderr).into_owned())
 }
 
 /// The overlay changes the image only by outlines (extents in bright object colours, grid
