@@ -9,7 +9,7 @@ mod trace;
 pub use primary::{nearest_hit, nearest_hit_cached, NearestHit};
 pub use shadow::{in_shadow, in_shadow_cached, in_shadow_culled, shadow_origin, ShadowCache, ShadowCulling};
 pub use statistics::Statistics;
-pub use trace::{fill_volumes, render_pga, render_rgb, shade_pixel, ShadedPixel};
+pub use trace::{fill_volumes, fill_volumes_rows, render_pga, render_pga_rows, render_rgb, render_rgb_rows, shade_pixel, ShadedPixel};
 
 #[cfg(test)]
 mod tests;

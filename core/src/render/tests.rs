@@ -127,3 +127,29 @@ fn statistics_count_pixels_rays_and_tests() {
     assert_eq!(statistics.ro_tests, 25);
     assert_eq!(sink.rows_done, 5);
 }
+
+/// Bands rendered one by one (as threads do) give the whole render's pixels, with Pixelbuffer
+/// on, and the band's sink sees only the band's rows.
+#[test]
+fn bands_render_the_same_pixels_as_the_whole_image() {
+    let mut description = sphere_scene(matte(3, 1.0, 0.5, 0.3, 20.0), Light::Point([3.0, 4.0, 10.0]));
+    description.optimizations = crate::scene::Optimizations::ALL;
+    let scene = Scene::<f64, 4>::prepare(&description).unwrap();
+    let mut whole = MockSink::<u8, 5, 5>::new(0);
+    render_pga(&scene, &mut whole, &mut Statistics::default());
+    let mut banded = MockSink::<u8, 5, 5>::new(0);
+    for (first, end) in [(0, 2), (2, 3), (3, 3), (3, 5)] {
+        let mut band = MockSink::<u8, 5, 5>::new(0);
+        let mut statistics = Statistics::default();
+        render_pga_rows(&scene, &mut band, &mut statistics, first..end);
+        assert_eq!(statistics.pixels, 5 * u64::from(end - first));
+        for row in 0..5 {
+            if (first..end).contains(&row) {
+                banded.pixels[usize::from(row)] = band.pixels[usize::from(row)];
+            } else {
+                assert_eq!(band.pixels[usize::from(row)], [0; 5], "row {row} outside the band {first}..{end}");
+            }
+        }
+    }
+    assert_eq!(banded.pixels, whole.pixels);
+}

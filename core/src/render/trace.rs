@@ -1,5 +1,7 @@
 //! Tracing a whole image, top row first (digest §3.4), into a [`PixelSink`].
 
+use core::ops::Range;
+
 use super::shadow::{in_shadow_culled, shadow_origin, ShadowCache, ShadowCulling};
 #[cfg(feature = "acceleration-tables")]
 use crate::geometry::Vector3;
@@ -76,7 +78,18 @@ where
     N: Number,
     S: PixelSink<u8> + PixelSource<u8>,
 {
-    render(scene, sink, statistics, scene.background, (PGA_FILL, PGA_FILL ^ 0xFF), |material, lighting, pixel| {
+    render_pga_rows(scene, sink, statistics, 0..scene.camera.height())
+}
+
+/// [`render_pga`] of the image rows `rows` only (a band, for one of several threads): the
+/// sink receives only those rows. Every pixel's value equals the whole render's; the
+/// statistics are the band's (the hit and shadow caches start empty at its first row).
+pub fn render_pga_rows<N, S, const MAX_OBJECTS: usize>(scene: &Scene<N, MAX_OBJECTS>, sink: &mut S, statistics: &mut Statistics, rows: Range<u16>)
+where
+    N: Number,
+    S: PixelSink<u8> + PixelSource<u8>,
+{
+    render(scene, sink, statistics, rows, scene.background, (PGA_FILL, PGA_FILL ^ 0xFF), |material, lighting, pixel| {
         pga_index(material, lighting, &scene.constants, scene.dither, pixel)
     })
 }
@@ -87,7 +100,16 @@ where
     N: Number,
     S: PixelSink<Rgb888> + PixelSource<Rgb888>,
 {
-    render(scene, sink, statistics, scene.background_rgb(), (RGB_FILL, RGB_FILL.map(|c| c ^ 0xFF)), |material, lighting, pixel| {
+    render_rgb_rows(scene, sink, statistics, 0..scene.camera.height())
+}
+
+/// [`render_rgb`] of the image rows `rows` only (see [`render_pga_rows`]).
+pub fn render_rgb_rows<N, S, const MAX_OBJECTS: usize>(scene: &Scene<N, MAX_OBJECTS>, sink: &mut S, statistics: &mut Statistics, rows: Range<u16>)
+where
+    N: Number,
+    S: PixelSink<Rgb888> + PixelSource<Rgb888>,
+{
+    render(scene, sink, statistics, rows, scene.background_rgb(), (RGB_FILL, RGB_FILL.map(|c| c ^ 0xFF)), |material, lighting, pixel| {
         rgb_pixel(material, lighting, &scene.constants, scene.dither, pixel)
     })
 }
@@ -105,6 +127,7 @@ fn render<N, P, S, const MAX_OBJECTS: usize>(
     scene: &Scene<N, MAX_OBJECTS>,
     sink: &mut S,
     statistics: &mut Statistics,
+    rows: Range<u16>,
     background: P,
     (fill, flood): (P, P),
     colour: impl Fn(&PreparedMaterial<N>, Lighting<N>, PixelPosition) -> P,
@@ -115,13 +138,14 @@ fn render<N, P, S, const MAX_OBJECTS: usize>(
 {
     let camera = &scene.camera;
     let pixelbuffer = scene.optimizations.pixelbuffer;
+    let rows = rows.start..rows.end.min(camera.height());
     if pixelbuffer {
-        fill_volumes(scene, sink, fill, flood);
+        fill_volumes_rows(scene, sink, fill, flood, rows.clone());
     }
     let mut cache = ShadowCache::default();
     with_shadow_culling(scene, |culling| {
     let mut chunk = [fill; READ_CHUNK];
-    for row in 0..camera.height() {
+    for row in rows {
         for column in 0..camera.width() {
             let pixel = camera.pixel(column, row);
             statistics.pixels += 1;
@@ -159,9 +183,23 @@ where
     P: Copy,
     S: PixelSink<P>,
 {
+    fill_volumes_rows(scene, sink, fill, flood, 0..scene.acceleration.screen().height)
+}
+
+/// [`fill_volumes`] within the image rows `rows` only.
+pub fn fill_volumes_rows<N, P, S, const MAX_OBJECTS: usize>(scene: &Scene<N, MAX_OBJECTS>, sink: &mut S, fill: P, flood: P, rows: Range<u16>)
+where
+    N: Number,
+    P: Copy,
+    S: PixelSink<P>,
+{
     let screen = scene.acceleration.screen();
-    let (width, height) = (screen.width, screen.height);
-    for row in 0..height {
+    let width = screen.width;
+    let rows = rows.start..rows.end.min(screen.height);
+    if rows.is_empty() {
+        return;
+    }
+    for row in rows.clone() {
         sink.fill_row(0, row, width, flood);
     }
     for object in scene.objects.iter() {
@@ -174,7 +212,7 @@ where
             Projected::Invisible => continue,
             Projected::Whole => {
                 // No projection (at or behind the eye, or rays along the view plane): all.
-                for row in 0..height {
+                for row in rows.clone() {
                     sink.fill_row(0, row, width, fill);
                 }
                 continue;
@@ -184,7 +222,7 @@ where
         if extent.is_empty() {
             continue;
         }
-        for row in extent.first_row..=extent.last_row {
+        for row in extent.first_row.max(rows.start)..=extent.last_row.min(rows.end.saturating_sub(1)) {
             if let Some((first, last)) = hull_span(&points, row, width) {
                 sink.fill_row(first, row, last - first + 1, fill);
             }
