@@ -66,6 +66,8 @@ impl Number for F32Micro {
     const SCENE_LIMIT: f64 = <f32 as Number>::SCENE_LIMIT;
     // The bit-trick square root scales exactly by even powers of two, like a correctly rounded one.
     const FLOATING_POINT: bool = true;
+    /// Up to 6 % (2⁻⁴ is 6.25 %).
+    const SQRT_ERROR_EXPONENT: i32 = -4;
     const RESOLUTION: Self = Self(0.0);
     const ZERO: Self = Self(0.0);
     const ONE: Self = Self(1.0);

@@ -126,6 +126,11 @@ pub trait Number:
     /// The `e` with `2^e ≤ |self| < 2^(e+1)`; `None` for zero.
     fn binary_exponent(self) -> Option<i32>;
 
+    /// The relative error of [`Number::sqrt`] is below 2^this. Conservative bounds built with
+    /// square roots (the shadow table's cones) widen by it; an approximate square root
+    /// (`f32-micromath`) overrides it.
+    const SQRT_ERROR_EXPONENT: i32 = -20;
+
     /// The documented range of scene values: the largest magnitude [`Number::can_represent`]
     /// accepts. Infinite for `f64`.
     const SCENE_LIMIT: f64 = f64::INFINITY;

@@ -222,25 +222,15 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
         self.optimizations.sortlist && self.near.get(object).is_some_and(|near| *near > t)
     }
 
-    /// Whether a shadow ray's segment may meet `object` (its bounding sphere).
-    #[inline]
-    /// Whether a shadow ray from `receiver` may meet `blocker` (see `shadow::may_block_object`).
-    pub fn may_block_object(&self, receiver: usize, blocker: usize, light: Option<[f64; 3]>, direction: Option<[f64; 3]>) -> bool {
-        #[cfg(feature = "acceleration-tables")]
-        if let (Some(r), Some(b)) = (self.shadow.get(receiver), self.shadow.get(blocker)) {
-            return shadow::may_block_object(r, b, light, direction);
-        }
-        let _ = (receiver, blocker, light, direction);
-        true
-    }
-
-    pub fn light_cone(&self, object: usize, light: Vector3<N>) -> (Vector3<N>, N) {
+    /// The object's view from the light for the per-render shadow table (always meeting
+    /// every shadow ray without the `acceleration-tables` feature).
+    pub fn light_footprint(&self, object: usize, light: shadow::LightPosition<N>) -> shadow::LightFootprint<N> {
         #[cfg(feature = "acceleration-tables")]
         if let Some(bound) = self.shadow.get(object) {
-            return bound.light_cone(light);
+            return bound.footprint(light);
         }
         let _ = (object, light);
-        (Vector3::zero(), -N::ONE)
+        shadow::LightFootprint::always()
     }
 
     #[inline]

@@ -7,6 +7,10 @@
 //! segments are found exactly (Ericson, *Real-Time Collision Detection* §5.1.9), nearly
 //! parallel segments are always tested, and lengths use `length3` (which never overflows in
 //! narrow fixed-point types).
+//!
+//! Per render, [`ShadowBound::footprint`] gives each object's view from the light (in the
+//! number type, linear in the objects) and [`blocker_table`] which objects may shadow which
+//! (sweep and prune over the footprints' boxes).
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 use crate::geometry::Vector3;
@@ -105,67 +109,272 @@ impl<N: Number> ShadowBound<N> {
     }
 }
 
-impl<N: Number> ShadowBound<N> {
-    /// For a point light at `light`: the cone of directions from the light that meet the
-    /// capsule's enclosing sphere, as (unit axis, cosine of the widened half-angle). A shadow
-    /// ray from P can meet the capsule only if the direction from the light to P lies in the
-    /// cone. `(zero, −1)` (always inside) when the light is within the sphere.
-    pub fn light_cone(&self, light: Vector3<N>) -> (Vector3<N>, N) {
-        let always = (Vector3::zero(), -N::ONE);
-        if self.radius == N::MAX {
-            return always;
+/// How an object's bounding sphere (about the capsule's centre, radius `reach`) is seen from
+/// the light, for the per-render shadow table ([`blocker_table`]). All in the number type,
+/// widened for its rounding (`margin`): conservative, never exact.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LightFootprint<N> {
+    /// For a point light: the cone of directions from the light that meet the sphere, as (unit
+    /// axis, cosine of the widened half-angle). A shadow ray from P can meet the object only if
+    /// the direction from the light to P lies in the cone. `(zero, −1)`: always inside.
+    pub cone: (Vector3<N>, N),
+    /// A box holding every direction of the cone (point light: |d − axis| ≤ √(2 − 2·cos)), or
+    /// the sphere's cross-section seen along the light (directional: the centre projected on
+    /// the plane through the origin perpendicular to the light, ± reach). Two objects whose
+    /// boxes are disjoint cannot both meet one shadow ray.
+    pub low: [N; 3],
+    pub high: [N; 3],
+    /// The middle of the box and its half-size: the box's inscribed ball holds the same set,
+    /// so two footprints whose balls are apart cannot share a shadow ray either.
+    pub centre: Vector3<N>,
+    pub radius: N,
+    /// The range of distances from the light (directional: of depth along the light) over
+    /// the sphere: a blocker whose `near` is beyond a receiver's `far` lies behind it.
+    pub near: N,
+    pub far: N,
+}
+
+impl<N: Number> LightFootprint<N> {
+    /// May meet any shadow ray.
+    pub fn always() -> Self {
+        Self {
+            cone: (Vector3::zero(), -N::ONE),
+            low: [-N::MAX; 3],
+            high: [N::MAX; 3],
+            centre: Vector3::zero(),
+            radius: N::MAX,
+            near: -N::MAX,
+            far: N::MAX,
         }
-        let v = [0, 1, 2].map(|k| self.centre.to_f64()[k] - light.to_f64()[k]);
-        let distance = libm::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-        let reach = self.reach.to_f64();
-        if !(distance > reach * (1.0 + 1e-6)) {
-            return always;
+    }
+
+    /// Whether some shadow ray from a point of `receiver` toward the light may meet `blocker`:
+    /// their boxes and their balls overlap and the blocker is not wholly behind the receiver.
+    #[inline]
+    pub fn may_shadow(&self, receiver: &Self) -> bool {
+        if !(self.near <= receiver.far && self.overlaps(receiver)) {
+            return false;
         }
-        let half_angle = libm::asin(reach / distance) + 1e-3;
-        if half_angle >= core::f64::consts::FRAC_PI_2 {
-            return always;
+        if self.radius == N::MAX || receiver.radius == N::MAX {
+            return true;
         }
-        (Vector3::from_f64(v.map(|c| c / distance)), N::from_f64(libm::cos(half_angle) - 1e-6))
+        // |Δ| ≤ r₁ + r₂ (`length3` never overflows in narrow fixed point; its rounding is far
+        // inside the radii's margins).
+        let apart = (self.centre - receiver.centre).length();
+        apart - apart.abs().times_power_of_two(N::SQRT_ERROR_EXPONENT) <= self.radius + receiver.radius
+    }
+
+    #[inline]
+    fn overlaps(&self, other: &Self) -> bool {
+        (0..3).all(|k| self.low[k] <= other.high[k] && other.low[k] <= self.high[k])
     }
 }
 
-/// Whether some shadow ray from a point of `receiver` toward the light may meet `blocker`
-/// (their capsules' enclosing spheres, in `f64`, widened): toward a point light, when the two
-/// spheres' cones of directions from the light overlap and the blocker's near side is nearer
-/// the light than the receiver's far side; toward a directional light, when the blocker's
-/// sphere comes within reach of the receiver's sphere swept toward the light.
-pub fn may_block_object<N: Number>(receiver: &ShadowBound<N>, blocker: &ShadowBound<N>, light: Option<[f64; 3]>, direction: Option<[f64; 3]>) -> bool {
-    if receiver.radius == N::MAX || blocker.radius == N::MAX {
-        return true;
-    }
-    let (r, b) = (receiver.centre.to_f64(), blocker.centre.to_f64());
-    let (r_reach, b_reach) = (receiver.reach.to_f64(), blocker.reach.to_f64());
-    let margin = 1e-3 * (1.0 + r_reach + b_reach);
-    let dot = |a: [f64; 3], c: [f64; 3]| a[0] * c[0] + a[1] * c[1] + a[2] * c[2];
-    if let Some(light) = light {
-        let a = [r[0] - light[0], r[1] - light[1], r[2] - light[2]];
-        let c = [b[0] - light[0], b[1] - light[1], b[2] - light[2]];
-        let (la, lc) = (libm::sqrt(dot(a, a)), libm::sqrt(dot(c, c)));
-        if la <= r_reach + margin || lc <= b_reach + margin {
-            return true;
+/// A relative 2⁻¹⁶ of `x`, plus 32 steps of a fixed-point type's resolution: the margin that
+/// covers the number type's rounding in [`ShadowBound::footprint`] (hundreds of times the
+/// rounding of the few operations involved in `f32` and `soft32`, whose mantissas have 24 and
+/// 28 bits; a fixed-point type's rounding is absolute).
+fn margin<N: Number>(x: N) -> N {
+    x.abs().times_power_of_two(-16) + N::RESOLUTION.times_power_of_two(5)
+}
+
+impl<N: Number> ShadowBound<N> {
+    /// The object's [`LightFootprint`] toward a point light at `position` or a directional
+    /// light toward unit `direction`, computed in the number type with a few products and two
+    /// square roots (no trigonometry: the cone's cosine is √(1 − sin²)).
+    pub fn footprint(&self, light: LightPosition<N>) -> LightFootprint<N> {
+        if self.radius == N::MAX {
+            return LightFootprint::always();
         }
-        if lc - b_reach > la + r_reach + margin {
-            return false;
+        match light {
+            LightPosition::Point(position) => {
+                // Every length below may be off by the square root's relative error, and the
+                // shadow rays' "unit" directions too: widen by four times that.
+                let slack = |x: N| margin(x) + x.abs().times_power_of_two(N::SQRT_ERROR_EXPONENT + 2);
+                let v = self.centre - position;
+                let distance = v.length();
+                let reach = self.reach + margin(self.reach) + slack(distance);
+                if !(distance > reach) {
+                    return LightFootprint::always();
+                }
+                let Some(inverse) = N::ONE.checked_div(distance) else { return LightFootprint::always() };
+                let axis = v * inverse;
+                let sine = reach * inverse;
+                let sine = sine + slack(sine);
+                // Lowered by the rounding of the unit vectors the shadow rays compare with it.
+                let cosine = (N::ONE - sine * sine).sqrt();
+                let cosine = cosine - slack(cosine) - slack(N::ONE);
+                if !(cosine > N::ZERO) {
+                    return LightFootprint::always();
+                }
+                let chord = ((N::ONE - cosine) + (N::ONE - cosine)).sqrt();
+                let chord = chord + slack(chord) + slack(N::ONE);
+                let axis_array = axis.to_array();
+                LightFootprint {
+                    cone: (axis, cosine),
+                    low: axis_array.map(|a| a - chord),
+                    high: axis_array.map(|a| a + chord),
+                    centre: axis,
+                    radius: chord,
+                    near: distance - reach,
+                    far: distance + reach,
+                }
+            }
+            LightPosition::Direction(direction) => {
+                let height = self.centre.dot(direction);
+                let across = self.centre - direction * height;
+                let reach = self.reach + margin(self.reach) + margin(self.centre.largest_component()) + margin(height);
+                LightFootprint {
+                    cone: (Vector3::zero(), -N::ONE),
+                    low: across.to_array().map(|a| a - reach),
+                    high: across.to_array().map(|a| a + reach),
+                    centre: across,
+                    radius: reach,
+                    near: -height - reach,
+                    far: -height + reach,
+                }
+            }
         }
-        let angle = libm::acos((dot(a, c) / (la * lc)).clamp(-1.0, 1.0));
-        return angle <= libm::asin(r_reach / la) + libm::asin(b_reach / lc) + 1e-3;
     }
-    if let Some(d) = direction {
-        let length = libm::sqrt(dot(d, d));
-        let d = d.map(|x| x / length);
-        let w = [b[0] - r[0], b[1] - r[1], b[2] - r[2]];
-        let along = dot(w, d);
-        let reach = r_reach + b_reach + margin;
-        if along < -reach {
-            return false;
+}
+
+/// Where the light is, for [`ShadowBound::footprint`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum LightPosition<N> {
+    Point(Vector3<N>),
+    /// Unit vector toward the light.
+    Direction(Vector3<N>),
+}
+
+/// Which objects may shadow which: `blockers[r]` gets bit `b` (for `b` < 128) when a shadow
+/// ray from object `r` may meet object `b` ([`LightFootprint::may_shadow`]). Sweep and prune
+/// (`order` is scratch space, one entry per object): the footprints sorted by their boxes' low
+/// x, each compared only with those whose x range overlaps its own, so the work grows with the
+/// objects and the overlapping pairs, not with all pairs.
+pub fn blocker_table<N: Number>(footprints: &[LightFootprint<N>], order: &mut [u16], blockers: &mut [u128]) {
+    let count = footprints.len().min(order.len()).min(blockers.len()).min(usize::from(u16::MAX));
+    let (order, blockers) = (&mut order[..count], &mut blockers[..count]);
+    blockers.fill(0);
+    for (index, place) in order.iter_mut().enumerate() {
+        *place = index as u16;
+    }
+    let low_x = |index: u16| footprints.get(usize::from(index)).map_or(-N::MAX, |f| f.low[0]);
+    super::sortlist::sort_by_bound(order, |index| low_x(index as u16));
+    for (position, &first) in order.iter().enumerate() {
+        let Some(a) = footprints.get(usize::from(first)) else { continue };
+        for &second in order.iter().skip(position + 1) {
+            let Some(b) = footprints.get(usize::from(second)) else { continue };
+            if b.low[0] > a.high[0] {
+                break;
+            }
+            let (i, j) = (usize::from(first), usize::from(second));
+            if j < 128 && b.may_shadow(a) {
+                if let Some(bits) = blockers.get_mut(i) {
+                    *bits |= 1u128 << j;
+                }
+            }
+            if i < 128 && a.may_shadow(b) {
+                if let Some(bits) = blockers.get_mut(j) {
+                    *bits |= 1u128 << i;
+                }
+            }
         }
-        let off = [w[0] - d[0] * along, w[1] - d[1] * along, w[2] - d[2] * along];
-        return libm::sqrt(dot(off, off)) <= reach;
     }
-    true
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A small linear congruential generator: the same spheres every run.
+    struct Random(u64);
+
+    impl Random {
+        fn next(&mut self) -> f64 {
+            self.0 = self.0.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1_442_695_040_888_963_407);
+            (self.0 >> 11) as f64 / (1u64 << 53) as f64
+        }
+
+        fn between(&mut self, low: f64, high: f64) -> f64 {
+            low + (high - low) * self.next()
+        }
+    }
+
+    /// Whether the segment from `p` to `p + length·d` (unit `d`) meets the sphere, in f64.
+    fn segment_meets_sphere(p: [f64; 3], d: [f64; 3], length: f64, centre: [f64; 3], radius: f64) -> bool {
+        let w = [0, 1, 2].map(|k| centre[k] - p[k]);
+        let along = (w[0] * d[0] + w[1] * d[1] + w[2] * d[2]).clamp(0.0, length);
+        let gap = [0, 1, 2].map(|k| p[k] + along * d[k] - centre[k]);
+        gap[0] * gap[0] + gap[1] * gap[1] + gap[2] * gap[2] <= radius * radius
+    }
+
+    /// Every blocker that some shadow ray from a surface point of a receiver really meets is in
+    /// the receiver's row of the table, for a point and a directional light, in each type; and
+    /// the table is not trivially full.
+    fn the_table_keeps_every_real_blocker<N: Number>() {
+        let mut random = Random(7);
+        let mut listed = 0u32;
+        let mut pairs = 0u32;
+        for scene in 0..40 {
+            let count = 12;
+            let spheres: [([f64; 3], f64); 12] = core::array::from_fn(|_| {
+                ([random.between(-40.0, 40.0), random.between(-10.0, 10.0), random.between(-40.0, 40.0)], random.between(0.5, 6.0))
+            });
+            let bounds: [ShadowBound<N>; 12] = spheres.map(|(centre, radius)| ShadowBound::new(centre, centre, radius));
+            let point = [random.between(-60.0, 60.0), random.between(30.0, 90.0), random.between(-60.0, 60.0)];
+            let toward = [random.between(-1.0, 1.0), 1.0, random.between(-1.0, 1.0)];
+            let norm = libm::sqrt(toward.iter().map(|c| c * c).sum::<f64>());
+            let toward = toward.map(|c| c / norm);
+            let light = if scene % 2 == 0 { LightPosition::Point(Vector3::from_f64(point)) } else { LightPosition::Direction(Vector3::from_f64(toward)) };
+            let footprints = bounds.map(|bound| bound.footprint(light));
+            let (mut order, mut table) = ([0u16; 12], [0u128; 12]);
+            blocker_table(&footprints, &mut order, &mut table);
+            for receiver in 0..count {
+                let (centre, radius) = spheres[receiver];
+                for blocker in (0..count).filter(|b| *b != receiver) {
+                    pairs += 1;
+                    let bit = table[receiver] & (1 << blocker) != 0;
+                    listed += u32::from(bit);
+                    // Sample the receiver's surface.
+                    for i in 0..24 {
+                        for j in 0..12 {
+                            let (a, b) = (core::f64::consts::TAU * f64::from(i) / 24.0, core::f64::consts::PI * (f64::from(j) + 0.5) / 12.0);
+                            let normal = [libm::cos(a) * libm::sin(b), libm::cos(b), libm::sin(a) * libm::sin(b)];
+                            let p = [0, 1, 2].map(|k| centre[k] + radius * normal[k]);
+                            let (d, length) = if scene % 2 == 0 {
+                                let v = [0, 1, 2].map(|k| point[k] - p[k]);
+                                let length = libm::sqrt(v.iter().map(|c| c * c).sum::<f64>());
+                                (v.map(|c| c / length), length)
+                            } else {
+                                (toward, 1e9)
+                            };
+                            let (other, other_radius) = spheres[blocker];
+                            if segment_meets_sphere(p, d, length, other, other_radius) {
+                                assert!(bit, "{}: scene {scene}: receiver {receiver} is shadowed by {blocker}, not in the table", N::NAME);
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        // An approximate square root (6 %) widens every cone so far that most pairs stay.
+        if N::SQRT_ERROR_EXPONENT < -10 {
+            assert!(listed < pairs / 2, "{}: the table lists {listed} of {pairs} pairs", N::NAME);
+        }
+    }
+
+    #[test]
+    fn the_blocker_table_is_conservative_and_selective() {
+        the_table_keeps_every_real_blocker::<f64>();
+        the_table_keeps_every_real_blocker::<f32>();
+        #[cfg(feature = "fixed-point")]
+        {
+            the_table_keeps_every_real_blocker::<crate::number::Fixed>();
+            the_table_keeps_every_real_blocker::<crate::number::Fixed16>();
+        }
+        #[cfg(feature = "soft-float")]
+        the_table_keeps_every_real_blocker::<crate::number::SoftFloat>();
+        #[cfg(feature = "micromath")]
+        the_table_keeps_every_real_blocker::<crate::number::F32Micro>();
+    }
 }

@@ -153,3 +153,4 @@ fn bands_render_the_same_pixels_as_the_whole_image() {
     }
     assert_eq!(banded.pixels, whole.pixels);
 }
+

@@ -5,6 +5,8 @@ use core::ops::Range;
 use super::shadow::{in_shadow_culled, shadow_origin, ShadowCache, ShadowCulling};
 #[cfg(feature = "acceleration-tables")]
 use crate::geometry::Vector3;
+#[cfg(feature = "acceleration-tables")]
+use crate::optimize::shadow::{blocker_table, LightFootprint, LightPosition};
 use super::primary::nearest_hit_cached;
 use super::Statistics;
 use crate::camera::PixelPosition;
@@ -231,43 +233,35 @@ where
 }
 
 /// Runs `body` with the per-render shadow tables: for a point light each object's cone of
-/// directions from the light, and which objects may shadow which (on the stack: 48 bytes per
-/// object in f64). Without the `acceleration-tables` feature there are none.
+/// directions from the light, and which objects may shadow which (on the stack: for `f32`
+/// about 60 bytes per object while the table is built, 32 while `body` runs). Both are built
+/// in the number type, in work linear in the objects and their overlapping pairs
+/// (`optimize::shadow::blocker_table`). Without the `acceleration-tables` feature there are none.
 #[cfg(feature = "acceleration-tables")]
 fn with_shadow_culling<N: Number, R, const MAX_OBJECTS: usize>(
     scene: &Scene<N, MAX_OBJECTS>,
     body: impl FnOnce(&ShadowCulling<'_, N>) -> R,
 ) -> R {
-    // Shadow culling for a point light: each object's cone of directions from the light.
     let mut light_cones = [(Vector3::zero(), -N::ONE); MAX_OBJECTS];
-    let mut cone_count = 0;
-    if let PreparedLight::Point(light) = scene.light {
-        if scene.shadows && scene.acceleration.culls_shadows() {
-            cone_count = scene.objects.len().min(light_cones.len());
-            for (index, cone) in light_cones.iter_mut().enumerate().take(cone_count) {
-                *cone = scene.acceleration.light_cone(index, light);
-            }
-        }
-    }
-    let light_cones = &light_cones[..cone_count];
-    // And which objects may shadow which (receiver -> bits of possible blockers).
     let mut blockers = [0u128; MAX_OBJECTS];
-    let mut blocker_count = 0;
+    let mut count = 0;
     if scene.shadows && scene.acceleration.culls_shadows() {
-        let (light, direction) = match scene.light {
-            PreparedLight::Point(position) => (Some(position.to_f64()), None),
-            PreparedLight::Direction(direction) => (None, Some(direction.to_f64())),
+        count = scene.objects.len().min(MAX_OBJECTS);
+        let light = match scene.light {
+            PreparedLight::Point(position) => LightPosition::Point(position),
+            PreparedLight::Direction(direction) => LightPosition::Direction(direction),
         };
-        blocker_count = scene.objects.len().min(blockers.len());
-        for (receiver, bits) in blockers.iter_mut().enumerate().take(blocker_count) {
-            for blocker in 0..blocker_count.min(128) {
-                if blocker != receiver && scene.acceleration.may_block_object(receiver, blocker, light, direction) {
-                    *bits |= 1u128 << blocker;
-                }
-            }
+        let footprints: [LightFootprint<N>; MAX_OBJECTS] = core::array::from_fn(|index| {
+            if index < count { scene.acceleration.light_footprint(index, light) } else { LightFootprint::always() }
+        });
+        for (cone, footprint) in light_cones.iter_mut().zip(&footprints) {
+            *cone = footprint.cone;
         }
+        let mut order = [0u16; MAX_OBJECTS];
+        blocker_table(&footprints[..count], &mut order, &mut blockers);
     }
-    body(&ShadowCulling { light_cones, blockers: &blockers[..blocker_count] })
+    let cone_count = if matches!(scene.light, PreparedLight::Point(_)) { count } else { 0 };
+    body(&ShadowCulling { light_cones: &light_cones[..cone_count], blockers: &blockers[..count] })
 }
 
 #[cfg(not(feature = "acceleration-tables"))]
