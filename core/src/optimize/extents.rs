@@ -70,6 +70,22 @@ impl Extent {
         }
     }
 
+    /// The inclusive column span of `row` within the octagon (the rectangle cut by the two
+    /// diagonal ranges); `None` when the row misses it. Integer arithmetic only: this is
+    /// Pixelbuffer's fill (`optimize::pixelbuffer`).
+    #[inline]
+    pub fn row_span(&self, row: u16, height: u16) -> Option<(u16, u16)> {
+        if row < self.first_row || row > self.last_row || self.first_column > self.last_column {
+            return None;
+        }
+        let (row, offset) = (i32::from(row), i32::from(height) - 1);
+        let [s1, s2, d1, d2] = self.diagonal.map(i32::from);
+        // s1 ≤ column + row ≤ s2 and d1 ≤ column − row + height − 1 ≤ d2.
+        let first = i32::from(self.first_column).max(s1 - row).max(d1 + row - offset);
+        let last = i32::from(self.last_column).min(s2 - row).min(d2 + row - offset);
+        (first <= last).then(|| (first.clamp(0, 65535) as u16, last.clamp(0, 65535) as u16))
+    }
+
     #[inline]
     pub fn contains(&self, column: u16, row: u16) -> bool {
         column >= self.first_column && column <= self.last_column && row >= self.first_row && row <= self.last_row

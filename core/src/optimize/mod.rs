@@ -117,7 +117,8 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
         for (index, description) in objects.iter().take(count).enumerate() {
             // The geometry as the tracer will see it: the inverse rounded to N, inverted back.
             let Some(geometry) = rendered_geometry::<N>(description) else { continue };
-            if optimizations.extents || optimizations.grid {
+            // Pixelbuffer fills the extents' octagons (`render::fill_volumes`).
+            if optimizations.extents || optimizations.grid || (optimizations.pixelbuffer && tuning.tight_silhouettes) {
                 self.extents[index] = Extent::of(&screen, &screen.project_object(&geometry, tuning.tight_silhouettes));
             }
             if optimizations.sortlist {

@@ -3,7 +3,12 @@
 //! read back just before it is traced, and a pixel still holding the flood colour gets the
 //! background without a ray.
 //!
-//! The fill is our own conservative scan conversion of the convex hull of the 8 projected
+//! Our fill (the default tuning) is each object's extent octagon (`Extent::row_span`): the
+//! silhouette's rectangle cut by its two diagonal ranges, prepared once with Extents, filled
+//! per frame in integer arithmetic, no projection (it was most of a Cortex-M frame in
+//! software `f64`). With the thesis's tuning (`Tuning::THESIS`), the thesis's volumes:
+//!
+//! The volume fill is our own conservative scan conversion of the convex hull of the 8 projected
 //! vertices (for a box in front of the eye that is exactly the union of the thesis's six
 //! quads): row r is filled from the leftmost to the rightmost point of the hull within the band
 //! of rows [r − MARGIN, r + MARGIN], widened by MARGIN, so a pixel whose sample point is within

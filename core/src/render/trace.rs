@@ -177,7 +177,9 @@ fn render<N, P, S, const MAX_OBJECTS: usize>(
 }
 
 /// Pixelbuffer's preprocess (`initpga` and `rendervolume`): flood the viewport, then fill
-/// every object's projected bounding volume, row span by row span. Public so a viewer can
+/// every object's extent octagon (its silhouette's rectangle cut by the two diagonal ranges,
+/// computed when the scene was prepared), row span by row span, in integer arithmetic. With
+/// the thesis's tuning, the thesis's fill: each 8-vertex volume projected and scan-converted. Public so a viewer can
 /// record which pixels the fill marks (into a sink of its own, with its own two values).
 pub fn fill_volumes<N, P, S, const MAX_OBJECTS: usize>(scene: &Scene<N, MAX_OBJECTS>, sink: &mut S, fill: P, flood: P)
 where
@@ -204,9 +206,24 @@ where
     for row in rows.clone() {
         sink.fill_row(0, row, width, flood);
     }
+    let acceleration = &scene.acceleration;
+    if acceleration.tuning().tight_silhouettes {
+        // Each object's extent octagon, prepared with the other optimizations: integer spans,
+        // no projection per frame.
+        for index in 0..scene.objects.len() {
+            let Some(extent) = acceleration.extent(index) else { continue };
+            for row in rows.clone() {
+                if let Some((first, last)) = extent.row_span(row, screen.height) {
+                    sink.fill_row(first, row, last - first + 1, fill);
+                }
+            }
+        }
+        return;
+    }
+    // The thesis's fill: each object's 8-vertex volume projected and scan-converted.
     for object in scene.objects.iter() {
         let projected = match ObjectGeometry::new(object.primitive, &object.object_from_world) {
-            Some(geometry) => screen.project_object(&geometry, scene.acceleration.tuning().tight_silhouettes),
+            Some(geometry) => screen.project_object(&geometry, false),
             None => Projected::Whole,
         };
         let points = match projected {
@@ -224,7 +241,7 @@ where
         if extent.is_empty() {
             continue;
         }
-        for row in extent.first_row.max(rows.start)..=extent.last_row.min(rows.end.saturating_sub(1)) {
+        for row in extent.first_row.max(rows.start)..=extent.last_row.min(rows.end - 1) {
             if let Some((first, last)) = hull_span(&points, row, width) {
                 sink.fill_row(first, row, last - first + 1, fill);
             }
