@@ -5,6 +5,7 @@ pub mod commands;
 pub mod files;
 pub mod image_difference;
 pub mod number_type;
+pub mod parallel;
 pub mod progress;
 pub mod rendering;
 pub mod scene_file;

@@ -1,17 +1,19 @@
 //! Rendering a scene description into memory with a chosen number type and mode, timing the
 //! preprocess and trace phases separately (Table 4.2's two times).
 
+use std::num::NonZeroUsize;
 use std::time::{Duration, Instant};
 
 use anyhow::bail;
 use clap::ValueEnum;
 use microtrace::pixel::{FrameBuffer, Rgb888};
-use microtrace::render::{render_pga, render_rgb, Statistics};
+use microtrace::render::{render_pga, render_pga_rows, render_rgb, render_rgb_rows, Statistics};
 use microtrace::scene::{Scene, Viewport};
 use microtrace::shading::Palette;
 
 use crate::number_type::NumberType;
-use crate::progress::Progress;
+use crate::parallel::render_in_bands;
+use crate::progress::{Progress, ProgressReport};
 use crate::scene_file::{HostScene, HOST_MAX_OBJECTS};
 use crate::with_number_type;
 
@@ -57,42 +59,65 @@ impl Rendered {
     }
 }
 
-/// Prepares and renders `scene`. With `progress` set, shows progress on a terminal.
+/// Prepares and renders `scene` on this thread alone. With `progress` set, shows progress on a
+/// terminal.
 pub fn render_scene(scene: &HostScene, number: NumberType, mode: Mode, progress: Option<&str>) -> anyhow::Result<Rendered> {
+    render_scene_on_threads(scene, number, mode, progress, NonZeroUsize::MIN)
+}
+
+/// [`render_scene`] on `threads` threads, in bands of rows (see [`crate::parallel`]). One thread
+/// is the plain whole-image render; with more, the image is the same and the statistics are the
+/// sum over bands.
+pub fn render_scene_on_threads(
+    scene: &HostScene,
+    number: NumberType,
+    mode: Mode,
+    progress: Option<&str>,
+    threads: NonZeroUsize,
+) -> anyhow::Result<Rendered> {
     let viewport = scene.viewport;
     let (width, height) = (viewport.width(), viewport.height());
     let pixel_count = usize::from(width) * usize::from(height);
     if pixel_count > 64 << 20 {
         bail!("the viewport is {width}x{height}: too large to render in memory");
     }
+    let single_threaded = threads.get() == 1;
     // The scene error stays typed (not just its text) so callers can tell "out of range" apart.
     with_number_type!(number, N => {
         let started = Instant::now();
         let prepared = Box::new(Scene::<N, HOST_MAX_OBJECTS>::prepare(scene).map_err(anyhow::Error::new)?);
         let preprocess = started.elapsed();
+        let mut report = ProgressReport::new(height, progress.unwrap_or(""));
+        report.enabled &= progress.is_some();
         let mut statistics = Statistics::default();
-        let label = progress.unwrap_or("");
         let started = Instant::now();
         let pixels = match mode {
             Mode::Pga => {
                 let mut buffer = vec![0u8; pixel_count];
-                let frame = FrameBuffer::new(&mut buffer, width, height).expect("buffer sized to the viewport");
-                let mut sink = Progress::new(frame, height, label);
-                sink.enabled &= progress.is_some();
-                render_pga(&*prepared, &mut sink, &mut statistics);
-                sink.finish();
+                if single_threaded {
+                    let frame = FrameBuffer::new(&mut buffer, width, height).expect("buffer sized to the viewport");
+                    render_pga(&*prepared, &mut Progress::new(frame, &report), &mut statistics);
+                } else {
+                    statistics = render_in_bands(&mut buffer, width, threads, &report, |sink, rows, statistics| {
+                        render_pga_rows(&*prepared, sink, statistics, rows)
+                    })?;
+                }
                 Pixels::Pga(buffer)
             }
             Mode::Rgb => {
                 let mut buffer = vec![[0u8; 3]; pixel_count];
-                let frame = FrameBuffer::new(&mut buffer, width, height).expect("buffer sized to the viewport");
-                let mut sink = Progress::new(frame, height, label);
-                sink.enabled &= progress.is_some();
-                render_rgb(&*prepared, &mut sink, &mut statistics);
-                sink.finish();
+                if single_threaded {
+                    let frame = FrameBuffer::new(&mut buffer, width, height).expect("buffer sized to the viewport");
+                    render_rgb(&*prepared, &mut Progress::new(frame, &report), &mut statistics);
+                } else {
+                    statistics = render_in_bands(&mut buffer, width, threads, &report, |sink, rows, statistics| {
+                        render_rgb_rows(&*prepared, sink, statistics, rows)
+                    })?;
+                }
                 Pixels::Rgb(buffer)
             }
         };
+        report.finish();
         Ok(Rendered { viewport, palette: scene.palette, pixels, statistics, preprocess, trace: started.elapsed() })
     })
 }

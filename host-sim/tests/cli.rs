@@ -112,3 +112,52 @@ fn decode_rejects_a_file_that_is_not_an_image() {
     assert!(text(&output.stderr).contains("cannot decode"), "{}", text(&output.stderr));
     assert!(!directory.join("out.png").exists());
 }
+
+/// Renders `scene` with `options` on `threads` threads into `directory`, returning the image
+/// file's bytes (the PGA file in PGA mode, the RGB file in RGB mode) and the statistics JSON.
+fn render_on_threads(directory: &Path, scene: &str, options: &[&str], threads: &str) -> (Vec<u8>, String) {
+    let rgb = options.contains(&"rgb");
+    let image = directory.join(format!("threads-{threads}.{}", if rgb { "rgb" } else { "pga" }));
+    let json = directory.join(format!("threads-{threads}.json"));
+    let mut arguments = vec!["render", scene, "--threads", threads, if rgb { "--rgb" } else { "--pga" }, image.to_str().unwrap()];
+    arguments.extend(["--stats-json", json.to_str().unwrap()]);
+    arguments.extend(options);
+    let output = microtrace(&arguments);
+    assert!(output.status.success(), "{arguments:?}: {}", text(&output.stderr));
+    (std::fs::read(&image).unwrap(), std::fs::read_to_string(&json).unwrap())
+}
+
+/// The value of `key` in the statistics JSON.
+fn statistic(json: &str, key: &str) -> u64 {
+    let after = &json[json.find(&format!("\"{key}\": ")).unwrap_or_else(|| panic!("no {key} in {json}")) + key.len() + 4..];
+    after[..after.find([',', '}']).unwrap()].parse().unwrap()
+}
+
+#[test]
+fn three_threads_render_the_single_threaded_image_byte_for_byte() {
+    let directory = scratch("threads");
+    // 61 rows: the last band of 8 rows is a partial one.
+    let cases = [("scenes/snooker.mts", "128x64"), ("scenes/lattice.mts", "466x480"), ("scenes/lattice.mts", "100x61")];
+    for (scene, size) in cases {
+        for options in [&["--size", size][..], &["--size", size, "--mode", "rgb"], &["--size", size, "--number", "f32"]] {
+            let (one_image, one_json) = render_on_threads(&directory, scene, options, "1");
+            let (three_image, three_json) = render_on_threads(&directory, scene, options, "3");
+            assert!(one_image.len() > 9, "{scene} {options:?}: an image was written");
+            assert!(one_image == three_image, "{scene} {options:?}: --threads 3 renders a different image from --threads 1");
+            // The caches restart at each band, so only the test counts may differ.
+            for key in ["pixels", "rays_traced", "rays_intersected", "shadow_rays"] {
+                assert_eq!(statistic(&one_json, key), statistic(&three_json, key), "{scene} {options:?}: {key}");
+            }
+        }
+    }
+}
+
+#[test]
+fn zero_threads_is_a_clear_error() {
+    let directory = scratch("zero-threads");
+    let image = directory.join("image.png");
+    let output = microtrace(&["render", "scenes/snooker.mts", "--size", "20x20", "--threads", "0", "--out", image.to_str().unwrap()]);
+    assert!(!output.status.success());
+    assert!(text(&output.stderr).contains("at least 1"), "{}", text(&output.stderr));
+    assert!(!image.exists());
+}

@@ -275,6 +275,7 @@ fn measure(case: Case) -> anyhow::Result<CaseResult> {
 /// time where there is no thread clock).
 fn timed_render(scene: &HostScene, number: NumberType) -> anyhow::Result<(crate::rendering::Rendered, Duration)> {
     let started = clock::thread_cpu_time();
+    // `render_scene` renders on this thread alone, so this thread's CPU time is the whole render's.
     let rendered = render_scene(scene, number, Mode::Pga, None)?;
     let time = match (started, clock::thread_cpu_time()) {
         (Some(started), Some(finished)) => finished.saturating_sub(started),

@@ -44,6 +44,8 @@ pub fn render_tuned(scene: &HostScene, optimizations: Optimizations, tuning: Tun
     let mut pixels = vec![0u8; scene.viewport.pixel_count() as usize];
     let mut statistics = Statistics::default();
     let started = Instant::now();
+    // Single-threaded on purpose, never `render --threads`: the tables reproduce the thesis's
+    // one-processor times and its statistics, which bands would change (caches restart per band).
     render_pga(&*prepared, &mut FrameBuffer::new(&mut pixels, width, height).expect("sized"), &mut statistics);
     Ok(Rendered { statistics, preprocess, trace: started.elapsed(), pixels })
 }

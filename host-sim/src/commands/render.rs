@@ -1,6 +1,7 @@
 //! `microtrace render SCENE.mts --out IMAGE.png`: render a scene to a PNG and/or the thesis's
 //! file formats. Every file is written whole or not at all.
 
+use std::num::NonZeroUsize;
 use std::path::PathBuf;
 
 use anyhow::{bail, Context};
@@ -8,7 +9,7 @@ use microtrace::scene::Optimizations;
 
 use crate::files;
 use crate::number_type::NumberType;
-use crate::rendering::{render_scene, Mode, Pixels, Rendered};
+use crate::rendering::{render_scene_on_threads, Mode, Pixels, Rendered};
 use crate::scene_file::{self, parse_optimizations, parse_size, parse_switch};
 
 #[derive(clap::Args, Clone, Debug)]
@@ -54,6 +55,21 @@ pub struct RenderArgs {
     /// Write the statistics as JSON.
     #[arg(long, value_name = "FILE")]
     pub stats_json: Option<PathBuf>,
+    /// Render on N threads, in bands of rows (default: one per core). 1 is the plain
+    /// single-threaded render; with more the image is the same, the statistics the sum over bands.
+    #[arg(long, value_name = "N", value_parser = parse_threads)]
+    pub threads: Option<NonZeroUsize>,
+}
+
+/// Parses a thread count of at least 1.
+fn parse_threads(text: &str) -> Result<NonZeroUsize, String> {
+    let count: usize = text.trim().parse().map_err(|_| format!("`{text}` is not a thread count: give a whole number from 1 up"))?;
+    NonZeroUsize::new(count).ok_or_else(|| "the thread count must be at least 1".to_owned())
+}
+
+/// One thread per core, or one where the core count is unknown.
+fn default_threads() -> NonZeroUsize {
+    std::thread::available_parallelism().unwrap_or(NonZeroUsize::MIN)
 }
 
 pub fn run(args: RenderArgs) -> anyhow::Result<()> {
@@ -69,7 +85,8 @@ pub fn run(args: RenderArgs) -> anyhow::Result<()> {
     let mut scene = scene_file::load(&args.scene)?;
     apply_overrides(&mut scene, &args);
     let label = format!("rendering {}", args.scene.display());
-    let rendered = render_scene(&scene, args.number, args.mode, Some(&label))?;
+    let threads = args.threads.unwrap_or_else(default_threads);
+    let rendered = render_scene_on_threads(&scene, args.number, args.mode, Some(&label), threads)?;
     write_outputs(&args, &rendered)
 }
 
