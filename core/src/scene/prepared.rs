@@ -37,6 +37,10 @@ pub struct PreparedMaterial<N> {
 pub struct Object<N> {
     pub primitive: Primitive,
     pub object_from_world: AffineTransform<N>,
+    /// A perspective view's eye in object space (`object_from_world.point(eye)`, the same
+    /// bits as transforming it per ray): every primary ray starts there, so a ray–object test
+    /// transforms only the direction. Zero for a parallel view.
+    pub eye: Vector3<N>,
     pub material: PreparedMaterial<N>,
 }
 
@@ -157,9 +161,11 @@ impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
             let inverse = object.world_from_object.affine_inverse().ok_or(error(SceneErrorKind::SingularTransform))?;
             range::check_object::<N>(object, &inverse, &origins)?;
             let material = &object.material;
+            let object_from_world = AffineTransform::from_matrix(&inverse);
             let prepared = Object {
                 primitive: object.primitive,
-                object_from_world: AffineTransform::from_matrix(&inverse),
+                object_from_world,
+                eye: self.camera.eye().map_or(Vector3::zero(), |eye| object_from_world.point(eye)),
                 material: PreparedMaterial {
                     colour: material.colour & 15,
                     ka: N::from_f64(material.ka),
