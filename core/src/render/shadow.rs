@@ -126,16 +126,21 @@ pub fn in_shadow_culled<N: Number, const MAX_OBJECTS: usize>(
             return true;
         }
     }
-    let mut remaining = bits.unwrap_or(0);
-    while remaining != 0 {
-        let index = remaining.trailing_zeros() as usize;
-        remaining &= remaining - 1;
-        if Some(index) == first {
-            continue;
-        }
-        if blocks(index, statistics) {
-            cache.last_blocker = Some(index as u16);
-            return true;
+    // The listed objects, 32 bits at a time (a 128-bit shift or count is several
+    // instructions on a 32-bit core; a word's is one).
+    let listed_bits = bits.unwrap_or(0);
+    for word in 0..4 {
+        let mut remaining = (listed_bits >> (32 * word)) as u32;
+        while remaining != 0 {
+            let index = 32 * word + remaining.trailing_zeros() as usize;
+            remaining &= remaining - 1;
+            if Some(index) == first {
+                continue;
+            }
+            if blocks(index, statistics) {
+                cache.last_blocker = Some(index as u16);
+                return true;
+            }
         }
     }
     let start = if bits.is_some() { 128 } else { 0 };

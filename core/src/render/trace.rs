@@ -147,29 +147,36 @@ fn render<N, P, S, const MAX_OBJECTS: usize>(
     let mut cache = ShadowCache::default();
     with_shadow_culling(scene, |culling| {
     let mut chunk = [fill; READ_CHUNK];
+    let mut chunk_length = 0;
+    let width = camera.width();
     for row in rows {
-        for column in 0..camera.width() {
-            let pixel = camera.pixel(column, row);
-            statistics.pixels += 1;
+        statistics.pixels += u64::from(width);
+        let mut column = 0;
+        while column < width {
             if pixelbuffer {
                 // Read the row back a chunk at a time, each chunk before any of it is written.
                 let offset = usize::from(column) % READ_CHUNK;
                 if offset == 0 {
                     chunk = [fill; READ_CHUNK];
-                    let length = usize::from(camera.width() - column).min(READ_CHUNK);
-                    sink.read_row(column, row, &mut chunk[..length]);
+                    chunk_length = usize::from(width - column).min(READ_CHUNK);
+                    sink.read_row(column, row, &mut chunk[..chunk_length]);
                 }
-                // Only a pixel that still holds the flood colour was never filled.
-                if chunk[offset] == flood {
-                    sink.set_pixel(column, row, background);
+                // Only a pixel that still holds the flood colour was never filled: the run of
+                // them in this chunk gets the background at once.
+                let run = chunk.get(offset..chunk_length).map_or(0, |rest| rest.iter().take_while(|value| **value == flood).count());
+                if run > 0 {
+                    sink.fill_row(column, row, run as u16, background);
+                    column += run as u16;
                     continue;
                 }
             }
+            let pixel = camera.pixel(column, row);
             let value = match shade_pixel_cached(scene, pixel, statistics, &mut cache, culling) {
                 ShadedPixel::Background => background,
                 ShadedPixel::Surface { material, lighting } => colour(&material, lighting, pixel),
             };
             sink.set_pixel(column, row, value);
+            column += 1;
         }
         sink.row_done(row);
     }
