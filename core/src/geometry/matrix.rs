@@ -67,8 +67,9 @@ impl Matrix4 {
 
     /// `p · M` for a point (translation applied, no w divide, as `transformpoint`).
     pub fn transform_point(&self, p: [f64; 3]) -> [f64; 3] {
-        let m = &self.rows;
-        core::array::from_fn(|j| p[0] * m[0][j] + p[1] * m[1][j] + p[2] * m[2][j] + m[3][j])
+        let [r0, r1, r2, r3] = &self.rows;
+        let column = |j: usize| p[0] * r0[j] + p[1] * r1[j] + p[2] * r2[j] + r3[j];
+        [column(0), column(1), column(2)]
     }
 
     /// The inverse of the affine part (upper 3x3 and row 3), or `None` when it is singular or

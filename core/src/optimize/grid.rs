@@ -14,6 +14,8 @@
 //! cell's corner, one byte each, saturating at 255, which only ever widens it), so a thin
 //! oblique object skips most pixels of the cells it crosses.
 
+use core::num::NonZeroU16;
+
 use super::extents::Extent;
 use crate::number::Number;
 use super::pixelbuffer::band_span;
@@ -40,8 +42,8 @@ const WHOLE_CELL: u16 = 0xFF00;
 pub struct Grid<N, const MAX_OBJECTS: usize> {
     /// False when the grid is off or its pool overflowed.
     pub active: bool,
-    cell_width: u16,
-    cell_height: u16,
+    cell_width: NonZeroU16,
+    cell_height: NonZeroU16,
     starts: [u16; CELLS + 1],
     pool: [[Entry; POOL_PER_OBJECT]; MAX_OBJECTS],
     /// With Sortlist: each entry's lower bound of `t` for the part of its object seen through
@@ -54,8 +56,8 @@ impl<N: Number, const MAX_OBJECTS: usize> Grid<N, MAX_OBJECTS> {
     /// costs zero-initialised RAM and no flash).
     pub const UNSET: Self = Self {
         active: false,
-        cell_width: 0,
-        cell_height: 0,
+        cell_width: NonZeroU16::MIN,
+        cell_height: NonZeroU16::MIN,
         starts: [0; CELLS + 1],
         pool: [[[0; 3]; POOL_PER_OBJECT]; MAX_OBJECTS],
         depth: [[N::ZERO; POOL_PER_OBJECT]; MAX_OBJECTS],
@@ -64,8 +66,8 @@ impl<N: Number, const MAX_OBJECTS: usize> Grid<N, MAX_OBJECTS> {
     pub fn inactive() -> Self {
         Self {
             active: false,
-            cell_width: 1,
-            cell_height: 1,
+            cell_width: NonZeroU16::MIN,
+            cell_height: NonZeroU16::MIN,
             starts: [0; CELLS + 1],
             pool: [[[0; 3]; POOL_PER_OBJECT]; MAX_OBJECTS],
             depth: [[-N::MAX; POOL_PER_OBJECT]; MAX_OBJECTS],
@@ -103,9 +105,11 @@ impl<N: Number, const MAX_OBJECTS: usize> Grid<N, MAX_OBJECTS> {
             return;
         }
         let grid = self;
-        let (cell_width, cell_height) = ((screen.width - 1) / GRID_SIZE + 1, (screen.height - 1) / GRID_SIZE + 1);
-        grid.cell_width = cell_width;
-        grid.cell_height = cell_height;
+        // At least 1, so the divisions below cannot be by zero.
+        let (cell_width, cell_height) = (screen.width.saturating_sub(1) / GRID_SIZE + 1, screen.height.saturating_sub(1) / GRID_SIZE + 1);
+        grid.cell_width = NonZeroU16::new(cell_width).unwrap_or(NonZeroU16::MIN);
+        grid.cell_height = NonZeroU16::new(cell_height).unwrap_or(NonZeroU16::MIN);
+        let (cell_width, cell_height) = (grid.cell_width, grid.cell_height);
         // Calls `add(cell, entry)` for every cell the object may cover.
         let visit = |object: u16, add: &mut dyn FnMut(usize, Entry)| {
             let Some(extent) = extents.get(usize::from(object)).copied() else { return };
@@ -113,12 +117,13 @@ impl<N: Number, const MAX_OBJECTS: usize> Grid<N, MAX_OBJECTS> {
                 return;
             }
             let shape = if cell_rectangles { polygon(usize::from(object)) } else { Projected::Whole };
-            for cell_row in extent.first_row / cell_height..=extent.last_row / cell_height {
-                let y0 = cell_row * cell_height;
-                let rows = (y0.max(extent.first_row), (y0 + (cell_height - 1)).min(extent.last_row));
-                for cell_column in extent.first_column / cell_width..=extent.last_column / cell_width {
-                    let x0 = cell_column * cell_width;
-                    let columns = (x0.max(extent.first_column), (x0 + (cell_width - 1)).min(extent.last_column));
+            let (width, height) = (cell_width.get(), cell_height.get());
+            for cell_row in extent.first_row / cell_height..=(extent.last_row / cell_height).min(GRID_SIZE - 1) {
+                let y0 = cell_row * height;
+                let rows = (y0.max(extent.first_row), (y0 + (height - 1)).min(extent.last_row));
+                for cell_column in extent.first_column / cell_width..=(extent.last_column / cell_width).min(GRID_SIZE - 1) {
+                    let x0 = cell_column * width;
+                    let columns = (x0.max(extent.first_column), (x0 + (width - 1)).min(extent.last_column));
                     let cell = usize::from(cell_row) * GRID_SIZE as usize + usize::from(cell_column);
                     let Projected::Points(p) = &shape else {
                         add(cell, [object, WHOLE_CELL, WHOLE_CELL]);
@@ -144,51 +149,57 @@ impl<N: Number, const MAX_OBJECTS: usize> Grid<N, MAX_OBJECTS> {
         // Pass 1: count per cell; pass 2: place, in test order.
         let mut counts = [0u32; CELLS];
         for &object in order {
-            visit(object, &mut |cell, _| counts[cell] += 1);
+            visit(object, &mut |cell, _| {
+                if let Some(count) = counts.get_mut(cell) {
+                    *count += 1;
+                }
+            });
         }
         let capacity = (POOL_PER_OBJECT * MAX_OBJECTS).min(u16::MAX as usize);
         let mut used = 0usize;
-        for (cell, count) in counts.iter().enumerate() {
-            grid.starts[cell] = used.min(u16::MAX as usize) as u16;
+        for (start, count) in grid.starts.iter_mut().zip(counts.iter()) {
+            *start = used.min(u16::MAX as usize) as u16;
             used += *count as usize;
         }
         if used > capacity {
             grid.clear();
             return;
         }
-        grid.starts[CELLS] = used as u16;
-        let mut next: [u16; CELLS] = core::array::from_fn(|cell| grid.starts[cell]);
+        if let Some(end) = grid.starts.last_mut() {
+            *end = used as u16;
+        }
+        let mut next = [0u16; CELLS];
+        next.copy_from_slice(&grid.starts[..CELLS]);
         let pool = grid.pool.as_flattened_mut();
         let bounds = grid.depth.as_flattened_mut();
         for &object in order {
             visit(object, &mut |cell, entry| {
-                let slot = usize::from(next[cell]);
-                pool[slot] = entry;
+                let Some(next) = next.get_mut(cell) else { return };
+                let slot = usize::from(*next);
+                *next += 1;
+                let Some(place) = pool.get_mut(slot) else { return };
+                *place = entry;
                 if let Some(depth) = depth {
                     let origin = |packed: u16, size: u16, index: u16| {
                         let corner = index * size;
                         (corner + (packed & 0xFF), corner + (packed >> 8))
                     };
                     let (cell_row, cell_column) = ((cell / GRID_SIZE as usize) as u16, (cell % GRID_SIZE as usize) as u16);
-                    let columns = origin(entry[1], cell_width, cell_column);
-                    let rows = origin(entry[2], cell_height, cell_row);
-                    bounds[slot] = depth(object, columns, rows);
+                    let columns = origin(entry[1], cell_width.get(), cell_column);
+                    let rows = origin(entry[2], cell_height.get(), cell_row);
+                    if let Some(bound) = bounds.get_mut(slot) {
+                        *bound = depth(object, columns, rows);
+                    }
                 }
-                next[cell] += 1;
             });
         }
         // Sort each cell by its entries' bounds (stable: insertion sort).
         if depth.is_some() {
-            for cell in 0..CELLS {
-                let (start, end) = (usize::from(grid.starts[cell]), usize::from(grid.starts[cell + 1]));
-                for i in start + 1..end {
-                    let mut j = i;
-                    while j > start && bounds[j] < bounds[j - 1] {
-                        bounds.swap(j, j - 1);
-                        pool.swap(j, j - 1);
-                        j -= 1;
-                    }
-                }
+            for span in grid.starts.windows(2) {
+                let &[start, end] = span else { continue };
+                let range = usize::from(start)..usize::from(end);
+                let (Some(bounds), Some(pool)) = (bounds.get_mut(range.clone()), pool.get_mut(range)) else { continue };
+                sort_cell(bounds, pool);
             }
         }
         grid.active = true;
@@ -197,8 +208,8 @@ impl<N: Number, const MAX_OBJECTS: usize> Grid<N, MAX_OBJECTS> {
     /// Back to [`Grid::inactive`], in place.
     pub fn clear(&mut self) {
         self.active = false;
-        self.cell_width = 1;
-        self.cell_height = 1;
+        self.cell_width = NonZeroU16::MIN;
+        self.cell_height = NonZeroU16::MIN;
         self.starts.fill(0);
         self.pool.as_flattened_mut().fill([0; 3]);
         self.depth.as_flattened_mut().fill(-N::MAX);
@@ -212,14 +223,31 @@ impl<N: Number, const MAX_OBJECTS: usize> Grid<N, MAX_OBJECTS> {
         let cell = usize::from(cell_row) * GRID_SIZE as usize + usize::from(cell_column);
         let (Some(start), Some(end)) = (self.starts.get(cell), self.starts.get(cell + 1)) else { return (&[], &[], 0, 0) };
         let (start, end) = (usize::from(*start), usize::from(*end));
-        let dx = (column - cell_column * self.cell_width).min(255);
-        let dy = (row - cell_row * self.cell_height).min(255);
+        let dx = (column - cell_column * self.cell_width.get()).min(255);
+        let dy = (row - cell_row * self.cell_height.get()).min(255);
         (self.pool.as_flattened().get(start..end).unwrap_or(&[]), self.depth.as_flattened().get(start..end).unwrap_or(&[]), dx, dy)
     }
 
     /// Total entries over all cells.
     pub fn entries(&self) -> usize {
         self.starts.get(CELLS).map_or(0, |entries| usize::from(*entries))
+    }
+}
+
+/// Sorts one cell's entries by their bounds (stable: insertion sort, with pattern-matched pairs
+/// so that no index can be out of range).
+fn sort_cell<N: Number>(bounds: &mut [N], pool: &mut [Entry]) {
+    for i in 1..bounds.len().min(pool.len()) {
+        let mut j = i;
+        while j > 0 {
+            let (Some([a, b]), Some([p, q])) = (bounds.get_mut(j - 1..=j), pool.get_mut(j - 1..=j)) else { break };
+            if !(*b < *a) {
+                break;
+            }
+            core::mem::swap(a, b);
+            core::mem::swap(p, q);
+            j -= 1;
+        }
     }
 }
 

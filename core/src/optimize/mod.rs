@@ -134,7 +134,9 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
         }
         if optimizations.sortlist {
             let near = &self.near;
-            sortlist::sort_by_bound(&mut self.order[..count], |i| near[i]);
+            if let Some(order) = self.order.get_mut(..count) {
+                sortlist::sort_by_bound(order, |i| near.get(i).copied().unwrap_or(-N::MAX));
+            }
         }
         if !optimizations.grid {
             self.grid.clear();
@@ -171,7 +173,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
     /// Every object, in test order (sorted by depth bound with Sortlist).
     #[inline]
     pub fn order(&self) -> &[u16] {
-        &self.order[..self.count]
+        self.order.get(..self.count).unwrap_or(&[])
     }
 
     pub fn tuning(&self) -> Tuning {

@@ -49,7 +49,7 @@ impl<N: Number> ShadowBound<N> {
         let d = [end[0] - start[0], end[1] - start[1], end[2] - start[2]];
         let length = libm::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
         let axis = if length > 0.0 { d.map(|c| c / length) } else { [0.0; 3] };
-        let centre = [0, 1, 2].map(|k| (start[k] + end[k]) / 2.0);
+        let centre = [(start[0] + end[0]) / 2.0, (start[1] + end[1]) / 2.0, (start[2] + end[2]) / 2.0];
         let scale = libm::sqrt(centre[0] * centre[0] + centre[1] * centre[1] + centre[2] * centre[2]) + length + radius + 1.0;
         let widened = radius * (1.0 + 1e-3) + 1e-3 * scale;
         let half = length / 2.0 * (1.0 + 1e-9);

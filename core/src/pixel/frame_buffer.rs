@@ -46,35 +46,41 @@ impl<'a, P: Copy> FrameBuffer<'a, P> {
 
 impl<P: Copy> PixelSink<P> for FrameBuffer<'_, P> {
     fn set_pixel(&mut self, x: u16, y: u16, value: P) {
-        if let Some(index) = self.index(x, y) {
-            self.pixels[index] = value;
+        if let Some(pixel) = self.index(x, y).and_then(|index| self.pixels.get_mut(index)) {
+            *pixel = value;
         }
     }
 
     fn write_row(&mut self, x: u16, y: u16, values: &[P]) {
         if let Some(start) = self.index(x, y) {
             let count = values.len().min((self.width - x) as usize);
-            self.pixels[start..start + count].copy_from_slice(&values[..count]);
+            if let (Some(pixels), Some(values)) = (self.pixels.get_mut(start..start + count), values.get(..count)) {
+                pixels.copy_from_slice(values);
+            }
         }
     }
 
     fn fill_row(&mut self, x: u16, y: u16, width: u16, value: P) {
         if let Some(start) = self.index(x, y) {
             let count = usize::from(width.min(self.width - x));
-            self.pixels[start..start + count].fill(value);
+            if let Some(pixels) = self.pixels.get_mut(start..start + count) {
+                pixels.fill(value);
+            }
         }
     }
 }
 
 impl<P: Copy> PixelSource<P> for FrameBuffer<'_, P> {
     fn get_pixel(&self, x: u16, y: u16) -> Option<P> {
-        self.index(x, y).map(|index| self.pixels[index])
+        self.index(x, y).and_then(|index| self.pixels.get(index).copied())
     }
 
     fn read_row(&self, x: u16, y: u16, values: &mut [P]) {
         if let Some(start) = self.index(x, y) {
             let count = values.len().min((self.width - x) as usize);
-            values[..count].copy_from_slice(&self.pixels[start..start + count]);
+            if let (Some(values), Some(pixels)) = (values.get_mut(..count), self.pixels.get(start..start + count)) {
+                values.copy_from_slice(pixels);
+            }
         }
     }
 }

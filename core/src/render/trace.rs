@@ -159,7 +159,9 @@ fn render<N, P, S, const MAX_OBJECTS: usize>(
                 if offset == 0 {
                     chunk = [fill; READ_CHUNK];
                     chunk_length = usize::from(width - column).min(READ_CHUNK);
-                    sink.read_row(column, row, &mut chunk[..chunk_length]);
+                    if let Some(part) = chunk.get_mut(..chunk_length) {
+                        sink.read_row(column, row, part);
+                    }
                 }
                 // Only a pixel that still holds the flood colour was never filled: the run of
                 // them in this chunk gets the background at once.
@@ -285,7 +287,7 @@ fn with_shadow_culling<N: Number, R, const MAX_OBJECTS: usize>(
         blocker_table(&footprints[..count], &mut order, &mut blockers);
     }
     let cone_count = if matches!(scene.light, PreparedLight::Point(_)) { count } else { 0 };
-    body(&ShadowCulling { light_cones: &light_cones[..cone_count], blockers: &blockers[..count] })
+    body(&ShadowCulling { light_cones: light_cones.get(..cone_count).unwrap_or(&[]), blockers: blockers.get(..count).unwrap_or(&[]) })
 }
 
 #[cfg(not(feature = "acceleration-tables"))]
