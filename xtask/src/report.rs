@@ -44,6 +44,11 @@ pub struct ReportRun {
     pub flash_bytes: u64,
     pub static_ram_bytes: u64,
     pub stack_peak_bytes: u64,
+    /// The linked-code audit's counts (`elf::audit`): double-precision routines, panic paths,
+    /// `core::fmt` functions.
+    pub f64_symbols: u64,
+    pub panic_symbols: u64,
+    pub fmt_symbols: u64,
 }
 
 /// A part of the report to run instead of all of it (`cargo xtask firmware-report --scene snooker
@@ -165,6 +170,9 @@ pub fn run(filter: &ReportFilter) -> Result<Vec<ReportRun>, String> {
             flash_bytes: get("flash_bytes")?,
             static_ram_bytes: get("static_ram_bytes")?,
             stack_peak_bytes: get("stack_peak_bytes")?,
+            f64_symbols: get("f64_symbols")?,
+            panic_symbols: get("panic_symbols")?,
+            fmt_symbols: get("fmt_symbols")?,
         };
         println!(
             "    {} instructions per pixel (frame {}: prepare {}, render {}), flash {} B, static RAM {} B, peak stack {} B ({:.0} s so far)",
@@ -211,7 +219,7 @@ pub fn json(runs: &[ReportRun]) -> String {
                 "{{\"scene\":\"{}\",\"board\":\"{}\",\"number\":\"{}\",\"primitives\":\"{}\",\"optimizations\":\"{}\",\"width\":{},\"height\":{},\
                  \"instructions\":{},\"frame_instructions\":{},\"prepare_instructions\":{},\"render_instructions\":{},\
                  \"pixels\":{},\"instructions_per_pixel\":{},\"flash_bytes\":{},\
-                 \"static_ram_bytes\":{},\"stack_peak_bytes\":{}}}",
+                 \"static_ram_bytes\":{},\"stack_peak_bytes\":{},\"f64_symbols\":{},\"panic_symbols\":{},\"fmt_symbols\":{}}}",
                 run.scene,
                 run.board.name(),
                 run.number,
@@ -227,7 +235,10 @@ pub fn json(runs: &[ReportRun]) -> String {
                 run.instructions_per_pixel,
                 run.flash_bytes,
                 run.static_ram_bytes,
-                run.stack_peak_bytes
+                run.stack_peak_bytes,
+                run.f64_symbols,
+                run.panic_symbols,
+                run.fmt_symbols
             )
         })
         .collect();
@@ -247,7 +258,9 @@ pub fn markdown(runs: &[ReportRun]) -> String {
              scene's preparation in place and the sink's set-up) and `render`. The lm3s6965evb (Cortex-M3) has no FPU: `f32` and `f64` are\n\
              software floating point there; the mps2-an386 (Cortex-M4F) runs `f32` in hardware. Flash is\n\
              text + data; static RAM is data + bss (the framebuffer, the OLED's copy on the lm3s6965evb, and\n\
-             the prepared scene with its acceleration structures).\n\n";
+             the prepared scene with its acceleration structures). `f64 routines` and `panic symbols` count the\n\
+             linked functions of each kind (double-precision soft float and libm's `f64` functions; panic\n\
+             paths), from the ELF's symbols; each run's `linked-audit.txt` names them.\n\n";
     text += &format!(
         "Budget on the lm3s6965evb (64 KB RAM, 256 KB flash) for both scenes in `f32`, asserted by\n\
          `tests/tests/firmware_qemu.rs`: flash at most {} KB, static RAM at most {} KB, peak stack at most\n\
@@ -258,12 +271,12 @@ pub fn markdown(runs: &[ReportRun]) -> String {
         budget::STACK_BYTES / 1024,
         budget::FREE_RAM_BYTES / 1024
     );
-    text += "| scene | board | number | instructions per pixel | frame instructions | prepare instructions | render instructions | flash bytes | static RAM bytes | peak stack bytes |\n";
-    text += "|---|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
+    text += "| scene | board | number | instructions per pixel | frame instructions | prepare instructions | render instructions | flash bytes | static RAM bytes | peak stack bytes | f64 routines | panic symbols |\n";
+    text += "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     let scene_optimizations = |run: &&ReportRun| run.primitives == Primitives::Scene && run.optimizations == "scene";
     for run in runs.iter().filter(scene_optimizations) {
         text += &format!(
-            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
+            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
             run.scene,
             run.board.name(),
             run.number,
@@ -273,7 +286,9 @@ pub fn markdown(runs: &[ReportRun]) -> String {
             thousands(run.render_instructions),
             thousands(run.flash_bytes),
             thousands(run.static_ram_bytes),
-            thousands(run.stack_peak_bytes)
+            thousands(run.stack_peak_bytes),
+            run.f64_symbols,
+            run.panic_symbols
         );
     }
     text += &without_optimizations(runs);
@@ -417,6 +432,38 @@ mod tests {
     }
 
     #[test]
+    fn the_table_has_the_frame_its_parts_and_the_audit() {
+        let run = ReportRun {
+            scene: "snooker".into(),
+            board: Board::Mps2An386,
+            number: "f32".into(),
+            primitives: Primitives::Scene,
+            optimizations: "scene",
+            width: 128,
+            height: 64,
+            instructions: 35_882_729,
+            frame_instructions: 35_882_729,
+            prepare_instructions: 22_777_349,
+            render_instructions: 13_105_380,
+            pixels: 8192,
+            instructions_per_pixel: 4380,
+            flash_bytes: 61_956,
+            static_ram_bytes: 18_080,
+            stack_peak_bytes: 9360,
+            f64_symbols: 30,
+            panic_symbols: 5,
+            fmt_symbols: 2,
+        };
+        let table = markdown(&[run]);
+        assert!(table.contains("| instructions per pixel | frame instructions | prepare instructions | render instructions |"), "{table}");
+        assert!(table.contains("| f64 routines | panic symbols |\n"), "{table}");
+        assert!(
+            table.contains("| snooker | mps2-an386 | f32 | 4,380 | 35,882,729 | 22,777,349 | 13,105,380 | 61,956 | 18,080 | 9,360 | 30 | 5 |\n"),
+            "{table}"
+        );
+    }
+
+    #[test]
     fn the_json_has_the_shape_bench_reads() {
         let run = ReportRun {
             scene: "snooker".into(),
@@ -435,13 +482,16 @@ mod tests {
             flash_bytes: 2,
             static_ram_bytes: 3,
             stack_peak_bytes: 4,
+            f64_symbols: 5,
+            panic_symbols: 6,
+            fmt_symbols: 7,
         };
         assert_eq!(
             json(&[run]),
             "{\"runs\":[\n{\"scene\":\"snooker\",\"board\":\"lm3s6965evb\",\"number\":\"f32\",\"primitives\":\"scene\",\
              \"optimizations\":\"scene\",\"width\":128,\"height\":64,\"instructions\":8192,\"frame_instructions\":8192,\
              \"prepare_instructions\":192,\"render_instructions\":8000,\"pixels\":8192,\"instructions_per_pixel\":1,\
-             \"flash_bytes\":2,\"static_ram_bytes\":3,\"stack_peak_bytes\":4}\n]}\n"
+             \"flash_bytes\":2,\"static_ram_bytes\":3,\"stack_peak_bytes\":4,\"f64_symbols\":5,\"panic_symbols\":6,\"fmt_symbols\":7}\n]}\n"
         );
     }
 }
