@@ -253,14 +253,15 @@ pub fn markdown(runs: &[ReportRun]) -> String {
              with the scene's own `optimize` and only the primitives it uses.\n\
              **Instructions are not cycles**: QEMU counts executed instructions (a TCG plugin, between\n\
              markers in the firmware), so a divide, a load or a taken branch each count as one, and flash\n\
-             wait states are not modelled. The count is the frame's: from before the scene is prepared to the\n\
-             end of the render (`frame`, and per pixel), split at a marker between the two into `prepare` (the\n\
-             scene's preparation in place and the sink's set-up) and `render`. The lm3s6965evb (Cortex-M3) has no FPU: `f32` and `f64` are\n\
-             software floating point there; the mps2-an386 (Cortex-M4F) runs `f32` in hardware. Flash is\n\
-             text + data; static RAM is data + bss (the framebuffer, the OLED's copy on the lm3s6965evb, and\n\
-             the prepared scene with its acceleration structures). `f64 routines` and `panic symbols` count the\n\
-             linked functions of each kind (double-precision soft float and libm's `f64` functions; panic\n\
-             paths), from the ELF's symbols; each run's `linked-audit.txt` names them.\n\n";
+             wait states are not modelled. The count is the frame's, from before the scene is prepared to\n\
+             the end of the render (`frame`, and per pixel), split at a marker between the two into\n\
+             `prepare` (the scene's preparation in place, the sink's set-up) and `render`. The lm3s6965evb\n\
+             (Cortex-M3) has no FPU: `f32` and `f64` are software floating point there; the mps2-an386\n\
+             (Cortex-M4F) runs `f32` in hardware. Flash is text + data; static RAM is data + bss (the\n\
+             framebuffer, the OLED's copy on the lm3s6965evb, and the prepared scene with its acceleration\n\
+             structures). `f64 routines` and `panic symbols` count the linked functions of each kind\n\
+             (double-precision soft float and libm's `f64` functions; panic paths), from the ELF's\n\
+             symbols; each run's `linked-audit.txt` names them.\n\n";
     text += &format!(
         "Budget on the lm3s6965evb (64 KB RAM, 256 KB flash) for both scenes in `f32`, asserted by\n\
          `tests/tests/firmware_qemu.rs`: flash at most {} KB, static RAM at most {} KB, peak stack at most\n\
@@ -330,8 +331,8 @@ fn without_optimizations(runs: &[ReportRun]) -> String {
         "\nWith every optimization off (`--opt none`), where the intersection and shading arithmetic\n\
          dominates, instructions per pixel and, in brackets, how many times fewer than `f32` on the same\n\
          board. With the optimizations on, far fewer intersections are left, and work that is the same\n\
-         for every number type (the optimizations' per-render projections, done in `f64`; writing\n\
-         pixels and the OLED) dilutes the differences in the table above:\n\n",
+         for every number type (the scene's preparation and the optimizations' projections, done in\n\
+         `f64`; writing pixels and the OLED) dilutes the differences in the table above:\n\n",
     );
     text += &format!("| scene | board | {} |\n|---|---|{}\n", NUMBERS.join(" | "), "---:|".repeat(NUMBERS.len()));
     for scene in SCENES {
