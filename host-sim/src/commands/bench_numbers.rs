@@ -786,10 +786,12 @@ fn write_group_table(report: &mut String, results: &[CaseResult], group: &str, f
 fn write_firmware_source(report: &mut String, firmware: &FirmwareSource) -> anyhow::Result<()> {
     writeln!(report, "## Where the Cortex-M figures come from\n")?;
     let source = format!(
-        "Instructions per pixel are read from `{}`, which `cargo xtask firmware-report` writes: each thesis scene \
-         rendered at 128x64 by the firmware under QEMU with an instruction-counting plugin, Cortex-M3 on the \
-         {CORTEX_M3_BOARD} board (no FPU: f32 in software) and Cortex-M4F on {CORTEX_M4F_BOARD} (single-precision FPU). \
-         They are instructions, not cycles.",
+        "Instructions per pixel and per frame are read from `{}`, which `cargo xtask firmware-report` writes: each \
+         thesis scene rendered at 128x64 by the firmware under QEMU with an instruction-counting plugin, Cortex-M3 on \
+         the {CORTEX_M3_BOARD} board (no FPU: f32 in software) and Cortex-M4F on {CORTEX_M4F_BOARD} (single-precision \
+         FPU). They count the frame, the scene's preparation plus the render, as the host's times do (a report without \
+         `frame_instructions` is from before the frame was measured and counts the render alone). They are \
+         instructions, not cycles.",
         firmware.path.display()
     );
     match &firmware.problem {
