@@ -87,7 +87,13 @@ fn firmware_matches_host(name: &str, board: Board) {
     for (key, host) in counted {
         assert_eq!(numbers[key], host, "{name} on {}: {key}, firmware against host", board.name());
     }
-    assert!(numbers["instructions"] > 0);
+    // The count is the frame's, split at the render marker; `instructions` is the frame's too.
+    let (frame, prepare, render) = (numbers["frame_instructions"], numbers["prepare_instructions"], numbers["render_instructions"]);
+    assert!(prepare > 0 && render > 0, "{name} on {}: prepare {prepare}, render {render}", board.name());
+    assert_eq!(prepare + render, frame, "{name} on {}: prepare + render against the frame", board.name());
+    assert_eq!(numbers["instructions"], frame);
+    assert_eq!(numbers["instructions_per_pixel"], frame / numbers["pixels"]);
+    assert_eq!(numbers["frame_instructions_per_pixel"], frame / numbers["pixels"]);
 
     if let Some(oled_png) = &run.oled_png {
         let oled = xtask::oled::read_png(oled_png).unwrap();
@@ -182,14 +188,15 @@ fn a_scene_needing_a_primitive_left_out_does_not_build() {
     assert!(error.contains("without the `sphere` feature"), "unexpected error: {error}");
 }
 
-/// The instruction count (the QEMU plugin's) is the same run to run.
+/// The instruction counts (the QEMU plugin's: frame, prepare, render) are the same run to run.
 #[test]
 fn the_instruction_count_is_deterministic() {
-    let counts: Vec<u64> = (0..2)
+    let counts: Vec<[u64; 3]> = (0..2)
         .map(|attempt| {
             let out = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("firmware/repeat-{attempt}"));
             let options = FirmwareOptions::new(scene_path("snooker.mts"), Board::Mps2An386, "f32", out);
-            firmware::run(&options).unwrap_or_else(|error| panic!("{error}")).numbers["instructions"]
+            let numbers = firmware::run(&options).unwrap_or_else(|error| panic!("{error}")).numbers;
+            ["frame_instructions", "prepare_instructions", "render_instructions"].map(|key| numbers[key])
         })
         .collect();
     assert_eq!(counts[0], counts[1]);
