@@ -2,7 +2,8 @@
 //! Cortex-M, shows it on the board's display if it has one, and reports to the host by
 //! semihosting: `framebuffer.bin` (palette indices, rows top first, as the data of an
 //! uncompressed PGA file) and `report.txt` (statistics, peak stack). The instruction count is
-//! taken by a QEMU plugin between the two markers in `measurement`.
+//! taken by a QEMU plugin at the three markers in `measurement`: the frame (preparation plus
+//! render), split at the render marker.
 #![no_std]
 #![no_main]
 
@@ -43,6 +44,8 @@ fn main() -> ! {
         fail("framebuffer taken twice")
     };
 
+    // The frame is measured: preparation, the sink's set-up and the render.
+    measurement::microtrace_measure_start();
     let scene = prepare(SCENE);
 
     let Some(framebuffer) = FrameBuffer::new(pixels, scene::WIDTH, scene::HEIGHT) else { fail("framebuffer size") };
@@ -52,7 +55,9 @@ fn main() -> ! {
     };
     let mut statistics = Statistics::default();
 
+    measurement::microtrace_measure_render();
     render(scene, &mut sink, &mut statistics);
+    measurement::microtrace_measure_end();
 
     let (stack_peak_bytes, stack_size_bytes) = stack::peak_and_size();
 
@@ -96,13 +101,11 @@ fn prepare(scene: &'static mut PreparedScene) -> &'static PreparedScene {
     }
 }
 
-/// The measured render, out of line like `prepare`: its per-render tables (shadow culling, about
-/// 2 KB for the lattice) are on the stack only while it runs, not under `prepare` as well.
+/// The render, out of line like `prepare`: its per-render tables (shadow culling, about 2 KB for
+/// the lattice) are on the stack only while it runs, not under `prepare` as well.
 #[inline(never)]
 fn render<S: PixelSink<u8> + PixelSource<u8>>(scene: &PreparedScene, sink: &mut S, statistics: &mut Statistics) {
-    measurement::microtrace_measure_start();
     render_pga(scene, sink, statistics);
-    measurement::microtrace_measure_end();
 }
 
 /// Reports `why` and ends the run with failure.

@@ -102,11 +102,11 @@ fn bench_numbers_reports_every_type_out_of_range_scenes_and_firmware_figures() {
     let firmware = directory.join("firmware-report.json");
     std::fs::write(
         &firmware,
-        r#"{"runs":[{"scene":"snooker","board":"lm3s6965evb","number":"f32","instructions_per_pixel":1000},
-                    {"scene":"snooker","board":"lm3s6965evb","number":"fixed","instructions_per_pixel":500},
-                    {"scene":"lattice","board":"lm3s6965evb","number":"f32","instructions_per_pixel":2000},
+        r#"{"runs":[{"scene":"snooker","board":"lm3s6965evb","number":"f32","instructions_per_pixel":1000,"frame_instructions":8192000},
+                    {"scene":"snooker","board":"lm3s6965evb","number":"fixed","instructions_per_pixel":500,"frame_instructions":4096000},
+                    {"scene":"lattice","board":"lm3s6965evb","number":"f32","instructions_per_pixel":2000,"instructions":16384000},
                     {"scene":"lattice","board":"lm3s6965evb","number":"fixed","instructions_per_pixel":1000},
-                    {"scene":"lattice","board":"mps2-an386","number":"f32","instructions_per_pixel":333}]}"#,
+                    {"scene":"lattice","board":"mps2-an386","number":"f32","instructions_per_pixel":333,"frame_instructions":2727936}]}"#,
     )
     .unwrap();
     let report = directory.join("numbers.md");
@@ -150,8 +150,23 @@ fn bench_numbers_reports_every_type_out_of_range_scenes_and_firmware_figures() {
     // The full-size rows have no firmware figures (those are 128x64 renders).
     let snooker_small_fixed = markdown.lines().find(|line| line.starts_with("| snooker 44x40 | fixed |")).unwrap();
     assert!(snooker_small_fixed.ends_with("| — | — |"), "{snooker_small_fixed}");
+    // The host panel on top (640 rows), the Cortex-M3 and Cortex-M4F panels side by side below
+    // it, with points where the report has instructions per frame (`frame_instructions`, or
+    // `instructions`).
     let (width, height, pixels) = microtrace_sim::files::read_png_rgb(&plot).unwrap();
-    assert_eq!((width, height), (1000, 640));
-    let coloured = pixels.iter().filter(|[r, g, b]| r.abs_diff(*g) > 60 || g.abs_diff(*b) > 60).count();
-    assert!(coloured > 100, "the plot has only {coloured} coloured pixels: no points drawn?");
+    assert_eq!((width, height), (1000, 1160));
+    let coloured = |rows: std::ops::Range<usize>, columns: std::ops::Range<usize>| {
+        rows.flat_map(|row| columns.clone().map(move |column| row * width as usize + column))
+            .filter(|&at| {
+                let [r, g, b] = pixels[at];
+                r.abs_diff(g) > 60 || g.abs_diff(b) > 60
+            })
+            .count()
+    };
+    let host = coloured(0..640, 0..1000);
+    assert!(host > 100, "the host panel has only {host} coloured pixels: no points drawn?");
+    let cortex_m3 = coloured(640..1160, 0..500);
+    let cortex_m4f = coloured(640..1160, 500..1000);
+    assert!(cortex_m3 > 100, "the Cortex-M3 panel has only {cortex_m3} coloured pixels: no points drawn?");
+    assert!(cortex_m4f > 20, "the Cortex-M4F panel has only {cortex_m4f} coloured pixels: no point drawn?");
 }

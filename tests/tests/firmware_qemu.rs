@@ -8,12 +8,14 @@
 //!   through the palette's `luminance()`;
 //! - the lm3s6965evb builds stay within the memory budget of firmware/README.md;
 //! - and in the integer number types too: the lattice in Q32.32 on the lm3s6965evb and snooker
-//!   in `soft32` on the mps2-an386 equal the host's render in the same type.
+//!   in `soft32` on the mps2-an386 equal the host's render in the same type;
+//! - the linked-code audit (f64 routines, panic paths, formatting) agrees with `llvm-nm`.
 //!
 //! Each test builds the firmware (release, a few seconds) and runs it; xtask installs QEMU and
 //! the rust targets when they are missing.
 
 use std::path::PathBuf;
+use std::process::Command;
 
 use microtrace::pixel::FrameBuffer;
 use microtrace::render::{render_pga, Statistics};
@@ -85,7 +87,13 @@ fn firmware_matches_host(name: &str, board: Board) {
     for (key, host) in counted {
         assert_eq!(numbers[key], host, "{name} on {}: {key}, firmware against host", board.name());
     }
-    assert!(numbers["instructions"] > 0);
+    // The count is the frame's, split at the render marker; `instructions` is the frame's too.
+    let (frame, prepare, render) = (numbers["frame_instructions"], numbers["prepare_instructions"], numbers["render_instructions"]);
+    assert!(prepare > 0 && render > 0, "{name} on {}: prepare {prepare}, render {render}", board.name());
+    assert_eq!(prepare + render, frame, "{name} on {}: prepare + render against the frame", board.name());
+    assert_eq!(numbers["instructions"], frame);
+    assert_eq!(numbers["instructions_per_pixel"], frame / numbers["pixels"]);
+    assert_eq!(numbers["frame_instructions_per_pixel"], frame / numbers["pixels"]);
 
     if let Some(oled_png) = &run.oled_png {
         let oled = xtask::oled::read_png(oled_png).unwrap();
@@ -180,15 +188,82 @@ fn a_scene_needing_a_primitive_left_out_does_not_build() {
     assert!(error.contains("without the `sphere` feature"), "unexpected error: {error}");
 }
 
-/// The instruction count (the QEMU plugin's) is the same run to run.
+/// The instruction counts (the QEMU plugin's: frame, prepare, render) are the same run to run.
 #[test]
 fn the_instruction_count_is_deterministic() {
-    let counts: Vec<u64> = (0..2)
+    let counts: Vec<[u64; 3]> = (0..2)
         .map(|attempt| {
             let out = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("firmware/repeat-{attempt}"));
             let options = FirmwareOptions::new(scene_path("snooker.mts"), Board::Mps2An386, "f32", out);
-            firmware::run(&options).unwrap_or_else(|error| panic!("{error}")).numbers["instructions"]
+            let numbers = firmware::run(&options).unwrap_or_else(|error| panic!("{error}")).numbers;
+            ["frame_instructions", "prepare_instructions", "render_instructions"].map(|key| numbers[key])
         })
         .collect();
     assert_eq!(counts[0], counts[1]);
+}
+
+/// `llvm-nm`: the toolchain's (the llvm-tools component that scripts/setup.sh adds), else the
+/// one on the PATH.
+fn llvm_nm() -> PathBuf {
+    let rustc = std::env::var("RUSTC").unwrap_or_else(|_| "rustc".into());
+    let ask = |arguments: &[&str]| {
+        Command::new(&rustc).args(arguments).output().ok().map(|output| String::from_utf8_lossy(&output.stdout).into_owned())
+    };
+    let sysroot = ask(&["--print", "sysroot"]).map(|text| text.trim().to_owned());
+    let host = ask(&["-vV"]).and_then(|text| text.lines().find_map(|line| line.strip_prefix("host: ").map(str::to_owned)));
+    if let (Some(sysroot), Some(host)) = (sysroot, host) {
+        let tool = PathBuf::from(sysroot).join("lib/rustlib").join(host).join("bin/llvm-nm");
+        if tool.is_file() {
+            return tool;
+        }
+    }
+    PathBuf::from("llvm-nm")
+}
+
+/// The audit finds the double-precision routines the mps2-an386 `f32` snooker build really links
+/// (today it links some: `f64` scene preparation and libm), checked against `llvm-nm`'s own
+/// list rather than a count, so it holds as that code is removed: every symbol the audit names
+/// is in the ELF, and every `__aeabi_d*` (and `__aeabi_*2d`) helper `llvm-nm` lists is among the
+/// audit's f64 routines. report.json and linked-audit.txt carry the same.
+#[test]
+fn the_linked_audit_agrees_with_llvm_nm() {
+    let out = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("firmware/audit-mps2-an386-snooker-f32");
+    let options = FirmwareOptions::new(scene_path("snooker.mts"), Board::Mps2An386, "f32", out);
+    let run = firmware::run(&options).unwrap_or_else(|error| panic!("{error}"));
+    let nm = llvm_nm();
+    let output = Command::new(&nm)
+        .arg("--defined-only")
+        .arg(&run.elf)
+        .output()
+        .unwrap_or_else(|error| panic!("cannot run {} (scripts/setup.sh adds llvm-tools): {error}", nm.display()));
+    assert!(output.status.success(), "{}: {}", nm.display(), String::from_utf8_lossy(&output.stderr));
+    // `ADDRESS TYPE NAME` a line.
+    let listed: Vec<String> = String::from_utf8_lossy(&output.stdout)
+        .lines()
+        .filter_map(|line| line.split_whitespace().nth(2).map(str::to_owned))
+        .collect();
+    assert!(listed.iter().any(|name| name == "microtrace_measure_start"), "llvm-nm listed no firmware symbols");
+
+    let audit = &run.audit;
+    for symbol in audit.f64.iter().chain(&audit.panic).chain(&audit.fmt) {
+        assert!(listed.contains(&symbol.name), "the audit names {} ({}), which llvm-nm does not list", symbol.name, symbol.demangled);
+    }
+    // The ARM run-time ABI's double helpers, `__aeabi_d*` (not `__aeabi_div0`, the integer
+    // divide-by-zero hook) and the conversions to double, `__aeabi_*2d`.
+    let aeabi_double: Vec<&String> = listed
+        .iter()
+        .filter(|name| (name.starts_with("__aeabi_d") && !name.starts_with("__aeabi_div")) || (name.starts_with("__aeabi_") && name.ends_with("2d")))
+        .collect();
+    for name in &aeabi_double {
+        assert!(audit.f64.iter().any(|symbol| &symbol.name == *name), "llvm-nm lists {name}, the audit's f64 routines lack it");
+    }
+    println!("llvm-nm lists {} __aeabi_ double helpers; the audit has {} f64 routines", aeabi_double.len(), audit.f64.len());
+
+    for (key, symbols) in [("f64_symbols", &audit.f64), ("panic_symbols", &audit.panic), ("fmt_symbols", &audit.fmt)] {
+        assert_eq!(run.numbers[key], symbols.len() as u64, "report.json's {key}");
+    }
+    let text = std::fs::read_to_string(&run.linked_audit_txt).unwrap();
+    for symbol in audit.f64.iter().chain(&audit.panic).chain(&audit.fmt) {
+        assert!(text.contains(&symbol.demangled), "linked-audit.txt lacks {}", symbol.demangled);
+    }
 }

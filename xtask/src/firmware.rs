@@ -1,6 +1,6 @@
 //! `cargo xtask firmware`: build the firmware for one scene, board and number type, run it
-//! under QEMU, and leave `framebuffer.bin`, `oled.png` (lm3s6965evb) and `report.json` in the
-//! output directory.
+//! under QEMU, and leave `framebuffer.bin`, `oled.png` (lm3s6965evb), `report.json` and
+//! `linked-audit.txt` in the output directory.
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -108,7 +108,12 @@ pub struct FirmwareRun {
     pub framebuffer: PathBuf,
     pub oled_png: Option<PathBuf>,
     pub report_json: PathBuf,
-    /// Every integer of the report, by key (`instructions`, `pixels`, `flash_bytes`, ...).
+    /// `linked-audit.txt`: the names of the audit's symbols.
+    pub linked_audit_txt: PathBuf,
+    /// The f64, panic and formatting symbols the ELF links (their counts are in `numbers`).
+    pub audit: elf::LinkedAudit,
+    /// Every integer of the report, by key (`frame_instructions`, `instructions` (the same),
+    /// `prepare_instructions`, `render_instructions`, `pixels`, `flash_bytes`, ...).
     pub numbers: BTreeMap<String, u64>,
 }
 
@@ -133,7 +138,7 @@ pub fn run(options: &FirmwareOptions) -> Result<FirmwareRun, String> {
 
     std::fs::create_dir_all(&options.out).map_err(|error| format!("{}: {error}", options.out.display()))?;
     let out = options.out.canonicalize().map_err(|error| format!("{}: {error}", options.out.display()))?;
-    for stale in ["framebuffer.bin", "report.txt", "report.json", "oled.png", "oled.ppm", "instructions.txt", "screendump.wanted", "screendump.done"] {
+    for stale in ["framebuffer.bin", "report.txt", "report.json", "oled.png", "oled.ppm", "instructions.txt", "linked-audit.txt", "screendump.wanted", "screendump.done"] {
         let _ = std::fs::remove_file(out.join(stale));
     }
 
@@ -145,17 +150,22 @@ pub fn run(options: &FirmwareOptions) -> Result<FirmwareRun, String> {
     }
     let elf_bytes = std::fs::read(&elf_path).map_err(|error| format!("{}: {error}", elf_path.display()))?;
     let footprint = elf::footprint(&elf_bytes)?;
+    let audit = elf::audit(&elf_bytes)?;
+    let linked_audit_txt = out.join("linked-audit.txt");
+    std::fs::write(&linked_audit_txt, audit.text()).map_err(|error| format!("{}: {error}", linked_audit_txt.display()))?;
     let start = elf::function_address(&elf_bytes, "microtrace_measure_start")?;
+    let render = elf::function_address(&elf_bytes, "microtrace_measure_render")?;
     let end = elf::function_address(&elf_bytes, "microtrace_measure_end")?;
 
     let plugin = qemu::instruction_count_plugin(&crate::firmware_dir().join("target/qemu-plugin"))?;
     let instructions_path = out.join("instructions.txt");
-    let plugin_arguments = format!("{},start={start:#x},end={end:#x},out={}", plugin.display(), instructions_path.display());
+    let plugin_arguments =
+        format!("{},start={start:#x},render={render:#x},end={end:#x},out={}", plugin.display(), instructions_path.display());
     run_qemu(options, &elf_path, &out, &plugin_arguments)?;
 
     let mut numbers = read_key_values(&out.join("report.txt"))?;
     let instructions = read_key_values(&instructions_path)
-        .map_err(|error| format!("no instruction count (did the render reach its end marker?): {error}"))?;
+        .map_err(|error| format!("no instruction count (did the frame reach its end marker?): {error}"))?;
     numbers.extend(instructions);
     let mut integers: BTreeMap<String, u64> = numbers.iter().filter_map(|(key, value)| Some((key.clone(), value.parse().ok()?))).collect();
     integers.insert("flash_bytes".into(), footprint.flash_bytes());
@@ -163,13 +173,28 @@ pub fn run(options: &FirmwareOptions) -> Result<FirmwareRun, String> {
     integers.insert("text_bytes".into(), footprint.text);
     integers.insert("data_bytes".into(), footprint.data);
     integers.insert("bss_bytes".into(), footprint.bss);
-    for key in ["instructions", "pixels", "stack_peak_bytes"] {
+    integers.insert("f64_symbols".into(), audit.f64.len() as u64);
+    integers.insert("panic_symbols".into(), audit.panic.len() as u64);
+    integers.insert("fmt_symbols".into(), audit.fmt.len() as u64);
+    for key in ["frame_instructions", "pixels", "stack_peak_bytes"] {
         if !integers.contains_key(key) {
             return Err(format!("the firmware's report lacks `{key}`"));
         }
     }
+    for key in ["prepare_instructions", "render_instructions"] {
+        if !integers.contains_key(key) {
+            return Err(format!(
+                "the instruction count lacks `{key}`: the frame reached its end marker without passing microtrace_measure_render"
+            ));
+        }
+    }
+    // `instructions` (and per pixel) are the frame's, as `frame_instructions`: the name older
+    // readers know.
+    let frame = integers["frame_instructions"];
     let pixels = integers["pixels"].max(1);
-    integers.insert("instructions_per_pixel".into(), integers["instructions"] / pixels);
+    integers.insert("instructions".into(), frame);
+    integers.insert("frame_instructions_per_pixel".into(), frame / pixels);
+    integers.insert("instructions_per_pixel".into(), frame / pixels);
 
     let mut names = BTreeMap::new();
     names.insert("board", options.board.name().to_owned());
@@ -184,7 +209,7 @@ pub fn run(options: &FirmwareOptions) -> Result<FirmwareRun, String> {
 
     let framebuffer = out.join("framebuffer.bin");
     let oled_png = options.board.has_display().then(|| out.join("oled.png"));
-    Ok(FirmwareRun { elf: elf_path, framebuffer, oled_png, report_json, numbers: integers })
+    Ok(FirmwareRun { elf: elf_path, framebuffer, oled_png, report_json, linked_audit_txt, audit, numbers: integers })
 }
 
 /// Says what is wrong with `--number` and `--opt` before anything is built.
@@ -339,13 +364,15 @@ fn json(names: &BTreeMap<&str, String>, integers: &BTreeMap<String, u64>) -> Str
 pub fn summary(run: &FirmwareRun, options: &FirmwareOptions) -> String {
     let get = |key: &str| run.numbers.get(key).copied().unwrap_or(0);
     let mut text = format!(
-        "{} on {} ({}): {} pixels, {} instructions ({} per pixel; instructions, not cycles)\n",
+        "{} on {} ({}): {} pixels, {} instructions per frame ({} per pixel; instructions, not cycles): prepare {}, render {}\n",
         options.scene.display(),
         options.board.name(),
         options.number,
         get("pixels"),
-        get("instructions"),
-        get("instructions_per_pixel"),
+        get("frame_instructions"),
+        get("frame_instructions_per_pixel"),
+        get("prepare_instructions"),
+        get("render_instructions"),
     );
     text += &format!(
         "flash {} bytes, static RAM {} bytes, peak stack {} bytes\n",
@@ -361,6 +388,10 @@ pub fn summary(run: &FirmwareRun, options: &FirmwareOptions) -> String {
         get("shadow_rays"),
         get("shadow_tests")
     );
+    for (what, symbols) in [("f64 routines", &run.audit.f64), ("panic symbols", &run.audit.panic), ("core::fmt symbols", &run.audit.fmt)] {
+        let names: Vec<&str> = symbols.iter().map(|symbol| symbol.demangled.as_str()).collect();
+        text += &format!("linked: {} {what}{}{}\n", names.len(), if names.is_empty() { "" } else { ": " }, names.join(", "));
+    }
     text += &format!("wrote {}", options.out.display());
     text
 }

@@ -3,7 +3,8 @@
 use std::path::PathBuf;
 use std::time::Duration;
 
-use xtask::firmware::{self, Board, FirmwareOptions};
+use xtask::firmware::{self, Board, FirmwareOptions, Primitives};
+use xtask::report::ReportFilter;
 
 fn usage() -> &'static str {
     "usage:
@@ -15,16 +16,21 @@ fn usage() -> &'static str {
       (default firmware/target/run/BOARD-SCENE-NUMBER).
   cargo xtask firmware-example
       Builds (does not run) the real-board example in firmware/examples/.
-  cargo xtask firmware-report
+  cargo xtask firmware-report [--scene snooker|lattice] [--board B] [--number N] [--opt scene|none]
+                              [--primitives scene|all]
       Runs both thesis scenes at 128x64 in every number type on both boards (and all-primitives
-      builds), writes the table into README.md and docs/firmware-report.json (several minutes)."
+      builds), writes the table into README.md and docs/firmware-report.json (several minutes).
+      With any of the options, runs only what they keep and writes the partial report to
+      firmware/target/report/partial/ (README.md and docs/ are left alone)."
 }
 
 fn main() {
     let arguments: Vec<String> = std::env::args().skip(1).collect();
     let result = match arguments.first().map(String::as_str) {
         Some("firmware") => firmware_task(&arguments[1..]),
-        Some("firmware-report") => xtask::report::run().map(|runs| println!("{} runs", runs.len())),
+        Some("firmware-report") => {
+            report_filter(&arguments[1..]).and_then(|filter| xtask::report::run(&filter)).map(|runs| println!("{} runs", runs.len()))
+        }
         Some("firmware-example") => xtask::example::build().map(|path| println!("built {}", path.display())),
         _ => Err(usage().to_owned()),
     };
@@ -32,6 +38,32 @@ fn main() {
         eprintln!("xtask: {message}");
         std::process::exit(1);
     }
+}
+
+fn report_filter(arguments: &[String]) -> Result<ReportFilter, String> {
+    let mut filter = ReportFilter::default();
+    let mut rest = arguments.iter();
+    while let Some(flag) = rest.next() {
+        let mut value = || rest.next().cloned().ok_or_else(|| format!("{flag} needs a value\n{}", usage()));
+        match flag.as_str() {
+            "--scene" => filter.scene = Some(value()?),
+            "--board" => {
+                let name = value()?;
+                filter.board = Some(Board::from_name(&name).ok_or_else(|| format!("unknown board `{name}` (lm3s6965evb or mps2-an386)"))?);
+            }
+            "--number" => filter.number = Some(value()?),
+            "--opt" => filter.optimizations = Some(value()?),
+            "--primitives" => {
+                filter.primitives = Some(match value()?.as_str() {
+                    "scene" => Primitives::Scene,
+                    "all" => Primitives::All,
+                    other => return Err(format!("--primitives {other}: scene or all")),
+                })
+            }
+            other => return Err(format!("unknown argument `{other}`\n{}", usage())),
+        }
+    }
+    Ok(filter)
 }
 
 fn firmware_task(arguments: &[String]) -> Result<(), String> {

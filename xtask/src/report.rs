@@ -31,39 +31,112 @@ pub struct ReportRun {
     pub optimizations: &'static str,
     pub width: u64,
     pub height: u64,
+    /// The frame's (preparation plus render), as `frame_instructions`.
     pub instructions: u64,
+    pub frame_instructions: u64,
+    /// From the start marker to the render marker: preparing the scene, setting up the sink.
+    pub prepare_instructions: u64,
+    /// From the render marker to the end marker.
+    pub render_instructions: u64,
     pub pixels: u64,
+    /// The frame's instructions per pixel.
     pub instructions_per_pixel: u64,
     pub flash_bytes: u64,
     pub static_ram_bytes: u64,
     pub stack_peak_bytes: u64,
+    /// The linked-code audit's counts (`elf::audit`): double-precision routines, panic paths,
+    /// `core::fmt` functions.
+    pub f64_symbols: u64,
+    pub panic_symbols: u64,
+    pub fmt_symbols: u64,
+}
+
+/// A part of the report to run instead of all of it (`cargo xtask firmware-report --scene snooker
+/// --board mps2-an386 --number f32`): each field left `None` keeps every value. A partial report
+/// is written under `firmware/target/report/partial/`, never into README.md or
+/// `docs/firmware-report.json`, whose tables it would cut short.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct ReportFilter {
+    /// A scene's stem (`snooker`, `lattice`).
+    pub scene: Option<String>,
+    pub board: Option<Board>,
+    pub number: Option<String>,
+    /// `scene` or `none`.
+    pub optimizations: Option<String>,
+    pub primitives: Option<Primitives>,
+}
+
+impl ReportFilter {
+    pub fn is_everything(&self) -> bool {
+        *self == Self::default()
+    }
+
+    fn keeps(&self, scene: &str, board: Board, number: &str, primitives: Primitives, optimizations: &str) -> bool {
+        let stem = scene.trim_start_matches("scenes/").trim_end_matches(".mts");
+        self.scene.as_deref().is_none_or(|wanted| wanted == stem)
+            && self.board.is_none_or(|wanted| wanted == board)
+            && self.number.as_deref().is_none_or(|wanted| wanted == number)
+            && self.primitives.is_none_or(|wanted| wanted == primitives)
+            && self.optimizations.as_deref().is_none_or(|wanted| wanted == optimizations)
+    }
+
+    /// Says what is wrong with a filter that names no scene, number or optimization the report
+    /// has, or keeps no run at all.
+    fn check(&self) -> Result<(), String> {
+        if let Some(scene) = &self.scene {
+            if !SCENES.iter().any(|file| file.trim_start_matches("scenes/").trim_end_matches(".mts") == scene) {
+                return Err(format!("--scene {scene}: the report runs snooker and lattice"));
+            }
+        }
+        if let Some(number) = &self.number {
+            if !NUMBERS.contains(&number.as_str()) {
+                return Err(format!("--number {number}: one of {}", NUMBERS.join(", ")));
+            }
+        }
+        if let Some(optimizations) = &self.optimizations {
+            if !["scene", "none"].contains(&optimizations.as_str()) {
+                return Err(format!("--opt {optimizations}: the report runs `scene` and `none`"));
+            }
+        }
+        if plan(self).is_empty() {
+            return Err("the filter keeps no run (all-primitives builds are f32 with the scene's optimizations only)".into());
+        }
+        Ok(())
+    }
 }
 
 /// What to run: every scene x board x number with the scene's primitives (with the scene's
-/// optimizations and with none), then every scene x board with all four primitives.
-fn plan() -> Vec<(PathBuf, Board, &'static str, Primitives, &'static str)> {
+/// optimizations and with none), then every scene x board with all four primitives; only the
+/// runs `filter` keeps.
+fn plan(filter: &ReportFilter) -> Vec<(PathBuf, Board, &'static str, Primitives, &'static str)> {
     let root = crate::repository_root();
     let mut plan = Vec::new();
     for optimizations in ["scene", "none"] {
         for scene in SCENES {
             for board in Board::ALL {
                 for number in NUMBERS {
-                    plan.push((root.join(scene), board, number, Primitives::Scene, optimizations));
+                    if filter.keeps(scene, board, number, Primitives::Scene, optimizations) {
+                        plan.push((root.join(scene), board, number, Primitives::Scene, optimizations));
+                    }
                 }
             }
         }
     }
     for scene in SCENES {
         for board in Board::ALL {
-            plan.push((root.join(scene), board, ALL_PRIMITIVES_NUMBER, Primitives::All, "scene"));
+            if filter.keeps(scene, board, ALL_PRIMITIVES_NUMBER, Primitives::All, "scene") {
+                plan.push((root.join(scene), board, ALL_PRIMITIVES_NUMBER, Primitives::All, "scene"));
+            }
         }
     }
     plan
 }
 
-/// Runs everything (printing progress), then writes README.md's table and the JSON.
-pub fn run() -> Result<Vec<ReportRun>, String> {
-    let plan = plan();
+/// Runs everything `filter` keeps (printing progress), then writes README.md's table and the
+/// JSON; for a partial report, both under `firmware/target/report/partial/` instead.
+pub fn run(filter: &ReportFilter) -> Result<Vec<ReportRun>, String> {
+    filter.check()?;
+    let plan = plan(filter);
     let mut runs = Vec::with_capacity(plan.len());
     let started = std::time::Instant::now();
     for (index, (scene, board, number, primitives, optimizations)) in plan.iter().enumerate() {
@@ -89,15 +162,24 @@ pub fn run() -> Result<Vec<ReportRun>, String> {
             width: get("width")?,
             height: get("height")?,
             instructions: get("instructions")?,
+            frame_instructions: get("frame_instructions")?,
+            prepare_instructions: get("prepare_instructions")?,
+            render_instructions: get("render_instructions")?,
             pixels: get("pixels")?,
             instructions_per_pixel: get("instructions_per_pixel")?,
             flash_bytes: get("flash_bytes")?,
             static_ram_bytes: get("static_ram_bytes")?,
             stack_peak_bytes: get("stack_peak_bytes")?,
+            f64_symbols: get("f64_symbols")?,
+            panic_symbols: get("panic_symbols")?,
+            fmt_symbols: get("fmt_symbols")?,
         };
         println!(
-            "    {} instructions per pixel, flash {} B, static RAM {} B, peak stack {} B ({:.0} s so far)",
+            "    {} instructions per pixel (frame {}: prepare {}, render {}), flash {} B, static RAM {} B, peak stack {} B ({:.0} s so far)",
             run.instructions_per_pixel,
+            run.frame_instructions,
+            run.prepare_instructions,
+            run.render_instructions,
             run.flash_bytes,
             run.static_ram_bytes,
             run.stack_peak_bytes,
@@ -107,6 +189,16 @@ pub fn run() -> Result<Vec<ReportRun>, String> {
     }
 
     let root = crate::repository_root();
+    if !filter.is_everything() {
+        let directory = crate::firmware_dir().join("target/report/partial");
+        std::fs::create_dir_all(&directory).map_err(|error| format!("{}: {error}", directory.display()))?;
+        for (name, text) in [("firmware-report.json", json(&runs)), ("table.md", markdown(&runs))] {
+            let path = directory.join(name);
+            std::fs::write(&path, text).map_err(|error| format!("{}: {error}", path.display()))?;
+            println!("wrote {} (a partial report: README.md and docs/ are left as they are)", path.display());
+        }
+        return Ok(runs);
+    }
     let json_path = root.join("docs/firmware-report.json");
     std::fs::write(&json_path, json(&runs)).map_err(|error| format!("{}: {error}", json_path.display()))?;
     println!("wrote {}", json_path.display());
@@ -125,8 +217,9 @@ pub fn json(runs: &[ReportRun]) -> String {
         .map(|run| {
             format!(
                 "{{\"scene\":\"{}\",\"board\":\"{}\",\"number\":\"{}\",\"primitives\":\"{}\",\"optimizations\":\"{}\",\"width\":{},\"height\":{},\
-                 \"instructions\":{},\"pixels\":{},\"instructions_per_pixel\":{},\"flash_bytes\":{},\
-                 \"static_ram_bytes\":{},\"stack_peak_bytes\":{}}}",
+                 \"instructions\":{},\"frame_instructions\":{},\"prepare_instructions\":{},\"render_instructions\":{},\
+                 \"pixels\":{},\"instructions_per_pixel\":{},\"flash_bytes\":{},\
+                 \"static_ram_bytes\":{},\"stack_peak_bytes\":{},\"f64_symbols\":{},\"panic_symbols\":{},\"fmt_symbols\":{}}}",
                 run.scene,
                 run.board.name(),
                 run.number,
@@ -135,11 +228,17 @@ pub fn json(runs: &[ReportRun]) -> String {
                 run.width,
                 run.height,
                 run.instructions,
+                run.frame_instructions,
+                run.prepare_instructions,
+                run.render_instructions,
                 run.pixels,
                 run.instructions_per_pixel,
                 run.flash_bytes,
                 run.static_ram_bytes,
-                run.stack_peak_bytes
+                run.stack_peak_bytes,
+                run.f64_symbols,
+                run.panic_symbols,
+                run.fmt_symbols
             )
         })
         .collect();
@@ -153,11 +252,16 @@ pub fn markdown(runs: &[ReportRun]) -> String {
              `docs/firmware-report.json`): each thesis scene rendered at 128x64 by the firmware under QEMU,\n\
              with the scene's own `optimize` and only the primitives it uses.\n\
              **Instructions are not cycles**: QEMU counts executed instructions (a TCG plugin, between\n\
-             markers around the render), so a divide, a load or a taken branch each count as one, and flash\n\
-             wait states are not modelled. The lm3s6965evb (Cortex-M3) has no FPU: `f32` and `f64` are\n\
-             software floating point there; the mps2-an386 (Cortex-M4F) runs `f32` in hardware. Flash is\n\
-             text + data; static RAM is data + bss (the framebuffer, the OLED's copy on the lm3s6965evb, and\n\
-             the prepared scene with its acceleration structures).\n\n";
+             markers in the firmware), so a divide, a load or a taken branch each count as one, and flash\n\
+             wait states are not modelled. The count is the frame's, from before the scene is prepared to\n\
+             the end of the render (`frame`, and per pixel), split at a marker between the two into\n\
+             `prepare` (the scene's preparation in place, the sink's set-up) and `render`. The lm3s6965evb\n\
+             (Cortex-M3) has no FPU: `f32` and `f64` are software floating point there; the mps2-an386\n\
+             (Cortex-M4F) runs `f32` in hardware. Flash is text + data; static RAM is data + bss (the\n\
+             framebuffer, the OLED's copy on the lm3s6965evb, and the prepared scene with its acceleration\n\
+             structures). `f64 routines` and `panic symbols` count the linked functions of each kind\n\
+             (double-precision soft float and libm's `f64` functions; panic paths), from the ELF's\n\
+             symbols; each run's `linked-audit.txt` names them.\n\n";
     text += &format!(
         "Budget on the lm3s6965evb (64 KB RAM, 256 KB flash) for both scenes in `f32`, asserted by\n\
          `tests/tests/firmware_qemu.rs`: flash at most {} KB, static RAM at most {} KB, peak stack at most\n\
@@ -168,20 +272,24 @@ pub fn markdown(runs: &[ReportRun]) -> String {
         budget::STACK_BYTES / 1024,
         budget::FREE_RAM_BYTES / 1024
     );
-    text += "| scene | board | number | instructions per pixel | instructions | flash bytes | static RAM bytes | peak stack bytes |\n";
-    text += "|---|---|---|---:|---:|---:|---:|---:|\n";
+    text += "| scene | board | number | instructions per pixel | frame instructions | prepare instructions | render instructions | flash bytes | static RAM bytes | peak stack bytes | f64 routines | panic symbols |\n";
+    text += "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     let scene_optimizations = |run: &&ReportRun| run.primitives == Primitives::Scene && run.optimizations == "scene";
     for run in runs.iter().filter(scene_optimizations) {
         text += &format!(
-            "| {} | {} | {} | {} | {} | {} | {} | {} |\n",
+            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
             run.scene,
             run.board.name(),
             run.number,
             thousands(run.instructions_per_pixel),
-            thousands(run.instructions),
+            thousands(run.frame_instructions),
+            thousands(run.prepare_instructions),
+            thousands(run.render_instructions),
             thousands(run.flash_bytes),
             thousands(run.static_ram_bytes),
-            thousands(run.stack_peak_bytes)
+            thousands(run.stack_peak_bytes),
+            run.f64_symbols,
+            run.panic_symbols
         );
     }
     text += &without_optimizations(runs);
@@ -223,8 +331,8 @@ fn without_optimizations(runs: &[ReportRun]) -> String {
         "\nWith every optimization off (`--opt none`), where the intersection and shading arithmetic\n\
          dominates, instructions per pixel and, in brackets, how many times fewer than `f32` on the same\n\
          board. With the optimizations on, far fewer intersections are left, and work that is the same\n\
-         for every number type (the optimizations' per-render projections, done in `f64`; writing\n\
-         pixels and the OLED) dilutes the differences in the table above:\n\n",
+         for every number type (the scene's preparation and the optimizations' projections, done in\n\
+         `f64`; writing pixels and the OLED) dilutes the differences in the table above:\n\n",
     );
     text += &format!("| scene | board | {} |\n|---|---|{}\n", NUMBERS.join(" | "), "---:|".repeat(NUMBERS.len()));
     for scene in SCENES {
@@ -313,6 +421,50 @@ mod tests {
     }
 
     #[test]
+    fn a_filter_keeps_only_its_runs() {
+        assert_eq!(plan(&ReportFilter::default()).len(), 2 * 2 * NUMBERS.len() * 2 + 2 * 2);
+        let one = ReportFilter { scene: Some("snooker".into()), board: Some(Board::Mps2An386), number: Some("f32".into()), ..Default::default() };
+        let kept: Vec<(Primitives, &str)> = plan(&one).into_iter().map(|(_, _, _, primitives, optimizations)| (primitives, optimizations)).collect();
+        assert_eq!(kept, [(Primitives::Scene, "scene"), (Primitives::Scene, "none"), (Primitives::All, "scene")]);
+        assert!(plan(&one).iter().all(|(scene, board, number, _, _)| scene.ends_with("scenes/snooker.mts") && *board == Board::Mps2An386 && *number == "f32"));
+        let none = ReportFilter { number: Some("fixed".into()), primitives: Some(Primitives::All), ..Default::default() };
+        assert!(none.check().unwrap_err().contains("keeps no run"));
+        assert!(ReportFilter { scene: Some("teapot".into()), ..Default::default() }.check().is_err());
+    }
+
+    #[test]
+    fn the_table_has_the_frame_its_parts_and_the_audit() {
+        let run = ReportRun {
+            scene: "snooker".into(),
+            board: Board::Mps2An386,
+            number: "f32".into(),
+            primitives: Primitives::Scene,
+            optimizations: "scene",
+            width: 128,
+            height: 64,
+            instructions: 35_882_729,
+            frame_instructions: 35_882_729,
+            prepare_instructions: 22_777_349,
+            render_instructions: 13_105_380,
+            pixels: 8192,
+            instructions_per_pixel: 4380,
+            flash_bytes: 61_956,
+            static_ram_bytes: 18_080,
+            stack_peak_bytes: 9360,
+            f64_symbols: 30,
+            panic_symbols: 5,
+            fmt_symbols: 2,
+        };
+        let table = markdown(&[run]);
+        assert!(table.contains("| instructions per pixel | frame instructions | prepare instructions | render instructions |"), "{table}");
+        assert!(table.contains("| f64 routines | panic symbols |\n"), "{table}");
+        assert!(
+            table.contains("| snooker | mps2-an386 | f32 | 4,380 | 35,882,729 | 22,777,349 | 13,105,380 | 61,956 | 18,080 | 9,360 | 30 | 5 |\n"),
+            "{table}"
+        );
+    }
+
+    #[test]
     fn the_json_has_the_shape_bench_reads() {
         let run = ReportRun {
             scene: "snooker".into(),
@@ -323,17 +475,24 @@ mod tests {
             width: 128,
             height: 64,
             instructions: 8192,
+            frame_instructions: 8192,
+            prepare_instructions: 192,
+            render_instructions: 8000,
             pixels: 8192,
             instructions_per_pixel: 1,
             flash_bytes: 2,
             static_ram_bytes: 3,
             stack_peak_bytes: 4,
+            f64_symbols: 5,
+            panic_symbols: 6,
+            fmt_symbols: 7,
         };
         assert_eq!(
             json(&[run]),
             "{\"runs\":[\n{\"scene\":\"snooker\",\"board\":\"lm3s6965evb\",\"number\":\"f32\",\"primitives\":\"scene\",\
-             \"optimizations\":\"scene\",\"width\":128,\"height\":64,\"instructions\":8192,\"pixels\":8192,\"instructions_per_pixel\":1,\
-             \"flash_bytes\":2,\"static_ram_bytes\":3,\"stack_peak_bytes\":4}\n]}\n"
+             \"optimizations\":\"scene\",\"width\":128,\"height\":64,\"instructions\":8192,\"frame_instructions\":8192,\
+             \"prepare_instructions\":192,\"render_instructions\":8000,\"pixels\":8192,\"instructions_per_pixel\":1,\
+             \"flash_bytes\":2,\"static_ram_bytes\":3,\"stack_peak_bytes\":4,\"f64_symbols\":5,\"panic_symbols\":6,\"fmt_symbols\":7}\n]}\n"
         );
     }
 }

@@ -27,7 +27,7 @@ mod firmware;
 mod plot;
 
 use firmware::{Build, FirmwareFigures, CORTEX_M3_BOARD, CORTEX_M4F_BOARD};
-use plot::PlotPoint;
+use plot::{BoardPanel, BoardPoint, PlotPoint};
 
 pub const DEFAULT_REPORT: &str = "docs/numbers.md";
 pub const DEFAULT_PLOT: &str = "docs/images/numbers.png";
@@ -143,6 +143,7 @@ pub fn run(args: &super::BenchArgs) -> anyhow::Result<()> {
         results.push(measure(case)?);
     }
     let plot_points = plot_points(&results);
+    let board_points = board_points(&results, &firmware.figures);
     let mut report = String::new();
     write_report(&mut report, &results, &unreadable, &firmware, &report_path, &plot_path, started.elapsed())?;
     if let Ok(existing) = std::fs::read_to_string(&report_path) {
@@ -157,7 +158,7 @@ pub fn run(args: &super::BenchArgs) -> anyhow::Result<()> {
     }
     files::write_atomically(&report_path, |out| out.write_all(report.as_bytes()))
         .with_context(|| format!("cannot write {}", report_path.display()))?;
-    plot::write(&plot_path, &plot_points, &GROUPS)?;
+    plot::write(&plot_path, &plot_points, &GROUPS, &board_points, &BOARD_PANELS)?;
     eprintln!("wrote {} and {}", report_path.display(), plot_path.display());
     Ok(())
 }
@@ -322,6 +323,38 @@ fn plot_points(results: &[CaseResult]) -> Vec<PlotPoint> {
     points
 }
 
+/// The board panels of the plot, Cortex-M3 then Cortex-M4F.
+const BOARD_PANELS: [BoardPanel; 2] = [
+    BoardPanel { title: "Cortex-M3 (lm3s6965evb, no FPU): firmware", board: CORTEX_M3_BOARD },
+    BoardPanel { title: "Cortex-M4F (mps2-an386): firmware", board: CORTEX_M4F_BOARD },
+];
+
+/// One point per board, thesis scene and number type: the firmware's instructions per 128x64
+/// frame (`frame_instructions`, or `instructions` in an older report) against the share of
+/// pixels of the host's 128x64 render in that type that differ from f64's (the firmware renders
+/// the same bytes; tests/tests/firmware_qemu.rs checks it). f64 is a point too, at 0 %.
+fn board_points(results: &[CaseResult], firmware: &FirmwareFigures) -> Vec<BoardPoint> {
+    let small_pixels = u32::from(SMALL_SIZE.0) * u32::from(SMALL_SIZE.1);
+    let mut points = Vec::new();
+    for panel in BOARD_PANELS {
+        for result in results.iter().filter(|r| r.case.group == GROUP_SMALL && r.case.scene.viewport.pixel_count() == small_pixels) {
+            for measured in &result.numbers {
+                let (Some(difference), name) = (&measured.difference, measured.number.name()) else { continue };
+                let Some(per_frame) = firmware.instructions_per_frame(&result.case.stem, panel.board, name) else { continue };
+                points.push(BoardPoint {
+                    board: panel.board,
+                    scene: result.case.stem.clone(),
+                    number: name,
+                    instructions_per_frame: per_frame.instructions,
+                    whole_frame: per_frame.whole_frame,
+                    percent_differing: difference.percent_differing(),
+                });
+            }
+        }
+    }
+    points
+}
+
 /// A verdict for the summary.
 fn verdict(met: Option<bool>) -> &'static str {
     match met {
@@ -357,10 +390,23 @@ fn write_report(
     writeln!(report, "![speed against error]({})\n", relative_link(report_path, plot_path))?;
     writeln!(
         report,
-        "One point per number type per scene group: x is the sum of the type's median render times over the group's \
-         scenes divided by the same sum for f64; y is the share of the group's pixels whose palette index differs \
-         from f64's (log scale; 0 % is drawn on the bottom line). Scenes a type cannot render (out of range) are left \
-         out of that type's point.\n"
+        "Top, the host: one point per number type per scene group: x is the sum of the type's median render times over \
+         the group's scenes divided by the same sum for f64; y is the share of the group's pixels whose palette index \
+         differs from f64's (log scale; 0 % is drawn on the bottom line). Scenes a type cannot render (out of range) are \
+         left out of that type's point.\n"
+    )?;
+    writeln!(
+        report,
+        "Below, one panel per board, {CORTEX_M3_BOARD} (Cortex-M3, no FPU) and {CORTEX_M4F_BOARD} (Cortex-M4F): one point \
+         per number type per thesis scene: x is the firmware's instructions for one {}x{} frame, preparation plus \
+         render (`frame_instructions` of the firmware report, or its `instructions` where it has none; log scale), y \
+         the same share of differing pixels as above for that scene at {}x{} (the firmware renders the host's bytes). \
+         Lower and further left is better: the type for a board is read off its panel. A report from before the frame \
+         was measured counts the render alone; the axis says so when a point's count is such.\n",
+        SMALL_SIZE.0,
+        SMALL_SIZE.1,
+        SMALL_SIZE.0,
+        SMALL_SIZE.1
     )?;
     for group in GROUPS {
         write_group_table(report, results, group, &firmware.figures)?;
@@ -741,10 +787,12 @@ fn write_group_table(report: &mut String, results: &[CaseResult], group: &str, f
 fn write_firmware_source(report: &mut String, firmware: &FirmwareSource) -> anyhow::Result<()> {
     writeln!(report, "## Where the Cortex-M figures come from\n")?;
     let source = format!(
-        "Instructions per pixel are read from `{}`, which `cargo xtask firmware-report` writes: each thesis scene \
-         rendered at 128x64 by the firmware under QEMU with an instruction-counting plugin, Cortex-M3 on the \
-         {CORTEX_M3_BOARD} board (no FPU: f32 in software) and Cortex-M4F on {CORTEX_M4F_BOARD} (single-precision FPU). \
-         They are instructions, not cycles.",
+        "Instructions per pixel and per frame are read from `{}`, which `cargo xtask firmware-report` writes: each \
+         thesis scene rendered at 128x64 by the firmware under QEMU with an instruction-counting plugin, Cortex-M3 on \
+         the {CORTEX_M3_BOARD} board (no FPU: f32 in software) and Cortex-M4F on {CORTEX_M4F_BOARD} (single-precision \
+         FPU). They count the frame, the scene's preparation plus the render, as the host's times do (a report without \
+         `frame_instructions` is from before the frame was measured and counts the render alone). They are \
+         instructions, not cycles.",
         firmware.path.display()
     );
     match &firmware.problem {

@@ -1,5 +1,7 @@
-//! Instructions per pixel on the Cortex-M boards, read from `docs/firmware-report.json`
-//! (written by `cargo xtask firmware-report`: 128x64 renders under QEMU).
+//! Instructions per pixel and per frame on the Cortex-M boards, read from
+//! `docs/firmware-report.json` (written by `cargo xtask firmware-report`: 128x64 frames,
+//! preparation plus render, under QEMU; reports from before the frame was measured counted the
+//! render alone).
 
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -18,10 +20,20 @@ pub enum Build {
     OptimizationsOff,
 }
 
-/// Instructions per pixel keyed by (build, scene file stem, board, number type name).
+/// Instructions per pixel and per frame keyed by (build, scene file stem, board, number type name).
 #[derive(Debug, Default)]
 pub struct FirmwareFigures {
     per_pixel: BTreeMap<(Build, String, String, String), u64>,
+    per_frame: BTreeMap<(Build, String, String, String), PerFrame>,
+}
+
+/// A run's instructions per frame, and whether they are the frame's.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PerFrame {
+    pub instructions: u64,
+    /// `frame_instructions` (preparation plus render); false for the `instructions` of a report
+    /// from before the frame was measured, which counted the render alone.
+    pub whole_frame: bool,
 }
 
 impl FirmwareFigures {
@@ -37,6 +49,8 @@ impl FirmwareFigures {
     }
 
     /// Parses `{"runs": [{"scene", "board", "number", "instructions_per_pixel", ...}, ...]}`.
+    /// The instructions per frame are `frame_instructions`, or `instructions` in a report that
+    /// has no `frame_instructions`; a run with neither has no figure per frame.
     /// The scene may be given with or without its `.mts` extension. Runs at another size than
     /// 128x64 (when `width` and `height` say so) are left out, and so are builds with every
     /// primitive (`"primitives": "all"`, made to compare code size). `"optimizations": "none"`
@@ -70,6 +84,14 @@ impl FirmwareFigures {
                 _ => continue,
             };
             let key = (build, scene.to_owned(), text_field("board")?.to_owned(), text_field("number")?.to_owned());
+            let per_frame = ["frame_instructions", "instructions"].into_iter().find_map(|key| Some((key, run.get(key)?))).map(|(key, value)| {
+                let instructions =
+                    value.as_u64().ok_or_else(|| format!("run {position}: the instructions per frame (\"{key}\") are not a whole number"))?;
+                Ok::<_, String>(PerFrame { instructions, whole_frame: key == "frame_instructions" })
+            });
+            if let Some(per_frame) = per_frame {
+                figures.per_frame.insert(key.clone(), per_frame?);
+            }
             figures.per_pixel.insert(key, per_pixel);
         }
         Ok(figures)
@@ -86,6 +108,11 @@ impl FirmwareFigures {
 
     pub fn instructions_per_pixel_of(&self, build: Build, scene: &str, board: &str, number: &str) -> Option<u64> {
         self.per_pixel.get(&(build, scene.to_owned(), board.to_owned(), number.to_owned())).copied()
+    }
+
+    /// The instructions of one 128x64 frame of the ordinary build (the scene's own optimizations).
+    pub fn instructions_per_frame(&self, scene: &str, board: &str, number: &str) -> Option<PerFrame> {
+        self.per_frame.get(&(Build::SceneOptimizations, scene.to_owned(), board.to_owned(), number.to_owned())).copied()
     }
 }
 
@@ -118,6 +145,24 @@ mod tests {
         assert_eq!(figures.instructions_per_pixel("snooker", CORTEX_M3_BOARD, "f32"), Some(5432));
         assert_eq!(figures.instructions_per_pixel_of(Build::OptimizationsOff, "snooker", CORTEX_M3_BOARD, "f32"), Some(84250));
         assert_eq!(figures.instructions_per_pixel("lattice", CORTEX_M3_BOARD, "f32"), None);
+    }
+
+    #[test]
+    fn the_frame_comes_from_frame_instructions_or_else_instructions() {
+        let figures = FirmwareFigures::parse(
+            r#"{"runs":[{"scene":"snooker","board":"mps2-an386","number":"f32","instructions":35882729,"frame_instructions":35882729,
+                         "prepare_instructions":22777349,"render_instructions":13105380,"instructions_per_pixel":4380},
+                        {"scene":"snooker","board":"lm3s6965evb","number":"f32","instructions":36840130,"instructions_per_pixel":4497},
+                        {"scene":"lattice","board":"lm3s6965evb","number":"f32","instructions_per_pixel":15236}]}"#,
+        )
+        .unwrap();
+        assert_eq!(figures.instructions_per_frame("snooker", CORTEX_M4F_BOARD, "f32"), Some(PerFrame { instructions: 35882729, whole_frame: true }));
+        assert_eq!(figures.instructions_per_frame("snooker", CORTEX_M3_BOARD, "f32"), Some(PerFrame { instructions: 36840130, whole_frame: false }));
+        assert_eq!(figures.instructions_per_frame("lattice", CORTEX_M3_BOARD, "f32"), None);
+        assert_eq!(figures.instructions_per_pixel("lattice", CORTEX_M3_BOARD, "f32"), Some(15236));
+        let error = FirmwareFigures::parse(r#"{"runs":[{"scene":"a","board":"b","number":"f32","instructions_per_pixel":1,"frame_instructions":"many"}]}"#)
+            .unwrap_err();
+        assert!(error.contains("per frame"), "{error}");
     }
 
     #[test]
