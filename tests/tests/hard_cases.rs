@@ -242,7 +242,10 @@ const CASES: &[Case] = &[
     Case { file: "touching.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.000653, 0.993, 0.0005, 0.0022)), micromath: Measured(bound(0.0005, 0.898, 0.0005, 0.042)), soft32: Targets },
     Case { file: "interpenetrating.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.000958, 0.992, 0.0005, 0.0052)), micromath: Measured(bound(0.000653, 0.908, 0.0005, 0.038)), soft32: Targets },
     Case { file: "coincident.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.0005, 0.994, 0.0005, 0.00108)), micromath: Measured(bound(0.0005, 0.863, 0.0005, 0.0138)), soft32: Targets },
-    Case { file: "near_singular.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.0145, 0.969, 0.0005, 2.0)), micromath: Measured(bound(0.0005, 0.98, 0.0005, 0.028)), soft32: Targets },
+    // fixed16 here: its rounded power-of-two interval scaling makes near-ties depend on the test
+    // order; the bound is that of the render with no optimization, which every combination
+    // gives since the capsule extents (the silhouette extents' order gave 97.4 % by chance).
+    Case { file: "near_singular.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.0195, 0.965, 0.0005, 2.0)), micromath: Measured(bound(0.0005, 0.98, 0.0005, 0.028)), soft32: Targets },
     Case { file: "specular_power.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.0005, 0.994, 0.0005, 0.00172)), micromath: Measured(bound(0.0005, 0.938, 0.0005, 0.019)), soft32: Targets },
     Case { file: "far_from_origin.mts", f32: Targets, fixed: Targets, fixed16: Rejected, micromath: Measured(bound(0.0005, 0.922, 0.000712, 0.042)), soft32: Targets },
     // Exact ties under inexact transforms: decided by the last bit in every type (f64 too), so

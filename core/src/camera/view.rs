@@ -122,6 +122,12 @@ impl<N: Number> Camera<N> {
         }
     }
 
+    /// The view-plane sample grid: (x of column 0, y of the bottom row), the spacing between
+    /// neighbouring samples (zero for a single column or row), and the view plane's z.
+    pub fn sampling(&self) -> ([N; 2], [N; 2], N) {
+        ([self.window_x1, self.window_y1], [self.spacing_x, self.spacing_y], self.view_plane)
+    }
+
     /// The common direction of all rays for a parallel projection, `None` for perspective.
     pub fn parallel_direction(&self) -> Option<Vector3<N>> {
         match self.origin {

@@ -16,6 +16,7 @@
 
 use core::num::NonZeroU16;
 
+use super::capsule::Stadium;
 use super::extents::Extent;
 use crate::number::Number;
 use super::pixelbuffer::band_span;
@@ -28,6 +29,18 @@ const CELLS: usize = if super::TABLES { GRID_SIZE as usize * GRID_SIZE as usize 
 /// Pool entries per object: an object may overlap this many cells on average.
 /// Zero without the `acceleration-tables` feature: the grid is then always inactive.
 pub const POOL_PER_OBJECT: usize = if cfg!(feature = "acceleration-tables") { 24 } else { 0 };
+
+/// What an entry knows of its object within the cell.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CellShape {
+    /// The whole cell (the thesis: membership by extent rectangle).
+    Rectangles,
+    /// The bounding rectangle of the silhouette polygon within the cell.
+    Polygons,
+    /// The bounding rectangle of the extent octagon within the cell, narrowed by the
+    /// object's [`Stadium`] where it has one (integer arithmetic).
+    Octagons,
+}
 
 /// A per-entry depth bound: (object, columns, rows) -> lower bound of `t`.
 pub type BlockDepth<'a, N> = dyn Fn(u16, (u16, u16), (u16, u16)) -> N + 'a;
@@ -81,11 +94,11 @@ impl<N: Number, const MAX_OBJECTS: usize> Grid<N, MAX_OBJECTS> {
         order: &[u16],
         extents: &[Extent],
         polygon: impl Fn(usize) -> Projected,
-        cell_rectangles: bool,
+        cells: CellShape,
         depth: Option<&BlockDepth<'_, N>>,
     ) -> Self {
         let mut grid = Self::inactive();
-        grid.rebuild(screen, order, extents, polygon, cell_rectangles, depth);
+        grid.rebuild(screen, order, extents, polygon, |_| None, cells, depth);
         grid
     }
 
@@ -97,7 +110,8 @@ impl<N: Number, const MAX_OBJECTS: usize> Grid<N, MAX_OBJECTS> {
         order: &[u16],
         extents: &[Extent],
         polygon: impl Fn(usize) -> Projected,
-        cell_rectangles: bool,
+        stadium: impl Fn(usize) -> Option<Stadium>,
+        cells: CellShape,
         depth: Option<&BlockDepth<'_, N>>,
     ) {
         self.clear();
@@ -116,7 +130,8 @@ impl<N: Number, const MAX_OBJECTS: usize> Grid<N, MAX_OBJECTS> {
             if extent.is_empty() {
                 return;
             }
-            let shape = if cell_rectangles { polygon(usize::from(object)) } else { Projected::Whole };
+            let shape = if cells == CellShape::Polygons { polygon(usize::from(object)) } else { Projected::Whole };
+            let stadium = if cells == CellShape::Octagons { stadium(usize::from(object)) } else { None };
             let (width, height) = (cell_width.get(), cell_height.get());
             for cell_row in extent.first_row / cell_height..=(extent.last_row / cell_height).min(GRID_SIZE - 1) {
                 let y0 = cell_row * height;
@@ -125,6 +140,33 @@ impl<N: Number, const MAX_OBJECTS: usize> Grid<N, MAX_OBJECTS> {
                     let x0 = cell_column * width;
                     let columns = (x0.max(extent.first_column), (x0 + (width - 1)).min(extent.last_column));
                     let cell = usize::from(cell_row) * GRID_SIZE as usize + usize::from(cell_column);
+                    let pack = |first: u16, last: u16, origin: u16| (first - origin).min(255) | ((last - origin).min(255) << 8);
+                    if cells == CellShape::Octagons {
+                        // The octagon's rows within the cell's columns, and its columns there.
+                        let mut covered: Option<(u16, u16, u16, u16)> = None;
+                        for row in rows.0..=rows.1 {
+                            let Some((first, last)) = extent.row_span(row, screen.height) else { continue };
+                            let (first, last) = (first.max(columns.0), last.min(columns.1));
+                            if first > last {
+                                continue;
+                            }
+                            covered = Some(match covered {
+                                None => (first, last, row, row),
+                                Some((c1, c2, r1, _)) => (c1.min(first), c2.max(last), r1, row),
+                            });
+                        }
+                        let Some((c1, c2, r1, r2)) = covered else { continue };
+                        // And within the stadium's part of the cell, for thin oblique objects.
+                        let ((c1, c2), (r1, r2)) = match stadium {
+                            Some(stadium) => match stadium.block((c1, c2), (r1, r2)) {
+                                Some(rectangle) => rectangle,
+                                None => continue,
+                            },
+                            None => ((c1, c2), (r1, r2)),
+                        };
+                        add(cell, [object, pack(c1, c2, x0), pack(r1, r2, y0)]);
+                        continue;
+                    }
                     let Projected::Points(p) = &shape else {
                         add(cell, [object, WHOLE_CELL, WHOLE_CELL]);
                         continue;
@@ -141,7 +183,6 @@ impl<N: Number, const MAX_OBJECTS: usize> Grid<N, MAX_OBJECTS> {
                     if r1 > r2 {
                         continue;
                     }
-                    let pack = |first: u16, last: u16, origin: u16| (first - origin).min(255) | ((last - origin).min(255) << 8);
                     add(cell, [object, pack(c1, c2, x0), pack(r1, r2, y0)]);
                 }
             }

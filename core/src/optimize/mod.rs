@@ -7,6 +7,7 @@
 //! [`pixelbuffer`] (the fill) and [`shadow`].
 
 pub mod bounding_volume;
+pub mod capsule;
 pub mod extents;
 pub mod grid;
 pub mod pixelbuffer;
@@ -20,6 +21,7 @@ use crate::number::Number;
 use crate::scene::{ObjectDescription, Optimizations};
 
 use bounding_volume::ObjectGeometry;
+use capsule::{Capsule, ScreenMap};
 use extents::Extent;
 use grid::Grid;
 use projection::Screen;
@@ -65,6 +67,8 @@ pub struct Acceleration<N, const MAX_OBJECTS: usize> {
     extents: [Extent; MAX_OBJECTS],
     /// Lower bound of the `t` of any hit on each object (`−N::MAX`: none known).
     near: [N; MAX_OBJECTS],
+    /// Each object's bounding capsule, for the grid's per-entry depth bounds (our tuning).
+    capsules: [Capsule<N>; MAX_OBJECTS],
     #[cfg(feature = "acceleration-tables")]
     shadow: [ShadowBound<N>; MAX_OBJECTS],
     grid: Grid<N, MAX_OBJECTS>,
@@ -92,6 +96,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
         order: [0; MAX_OBJECTS],
         extents: [Extent { first_column: 0, last_column: 0, first_row: 0, last_row: 0, diagonal: [0; 4] }; MAX_OBJECTS],
         near: [N::ZERO; MAX_OBJECTS],
+        capsules: [Capsule::UNSET; MAX_OBJECTS],
         #[cfg(feature = "acceleration-tables")]
         shadow: [ShadowBound::UNSET; MAX_OBJECTS],
         grid: Grid::UNSET,
@@ -111,18 +116,47 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
         }
         self.extents.fill(Extent::whole(&screen));
         self.near.fill(-N::MAX);
+        self.capsules.fill(Capsule::UNSET);
         #[cfg(feature = "acceleration-tables")]
         self.shadow.fill(ShadowBound::always());
         let corners = window_corners(&screen, camera);
+        let map = ScreenMap::new(camera);
+        // Our tuning: capsules seen from the eye, in the number type (`capsule`); the thesis's:
+        // its volumes projected in f64.
+        let capsules = tuning.tight_silhouettes;
+        // Each object's silhouette as a stadium for the grid's cells (on the stack: 20 bytes an
+        // object while the grid is built).
+        let mut stadiums: [Option<capsule::Stadium>; MAX_OBJECTS] = [None; MAX_OBJECTS];
         for (index, description) in objects.iter().take(count).enumerate() {
             // The geometry as the tracer will see it: the inverse rounded to N, inverted back.
             let Some(geometry) = rendered_geometry::<N>(description) else { continue };
+            let capsule = if capsules {
+                let (start, end, radius) = geometry.bounding_capsule();
+                Capsule::new(start, end, radius)
+            } else {
+                Capsule::UNSET
+            };
+            if let Some(slot) = self.capsules.get_mut(index) {
+                *slot = capsule;
+            }
             // Pixelbuffer fills the extents' octagons (`render::fill_volumes`).
-            if optimizations.extents || optimizations.grid || (optimizations.pixelbuffer && tuning.tight_silhouettes) {
-                self.extents[index] = Extent::of(&screen, &screen.project_object(&geometry, tuning.tight_silhouettes));
+            if optimizations.extents || optimizations.grid || (optimizations.pixelbuffer && capsules) {
+                self.extents[index] = if capsules {
+                    let (covered, stadium) = map.cover_and_stadium(&capsule);
+                    if let Some(slot) = stadiums.get_mut(index) {
+                        *slot = stadium;
+                    }
+                    Extent::of_cover(&map, &covered)
+                } else {
+                    Extent::of(&screen, &screen.project_object(&geometry, false))
+                };
             }
             if optimizations.sortlist {
-                if let Some(bound) = sortlist::depth_bound(&screen, &corners, &geometry) {
+                if capsules {
+                    if let Some(bound) = map.depth_bound(&capsule) {
+                        self.near[index] = bound;
+                    }
+                } else if let Some(bound) = sortlist::depth_bound(&screen, &corners, &geometry) {
                     self.near[index] = N::from_f64(bound);
                 }
             }
@@ -142,11 +176,24 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
             self.grid.clear();
             return;
         }
+        let stored = &self.capsules;
+        let capsules_of = |index: usize| stored.get(index).copied();
         let polygon = |index: usize| match objects.get(index).and_then(rendered_geometry::<N>) {
             Some(geometry) => screen.project_object(&geometry, tuning.tight_silhouettes),
             None => projection::Projected::Whole,
         };
         let near = &self.near;
+        let block_capsule = |object: u16, columns: (u16, u16), rows: (u16, u16)| -> N {
+            let index = usize::from(object);
+            let global = near.get(index).copied().unwrap_or(-N::MAX);
+            // Only cylinders and cones gain: a sphere's or cube's capsule is a ball.
+            let shaped = objects.get(index).is_some_and(|o| matches!(o.primitive, crate::scene::Primitive::Cylinder | crate::scene::Primitive::Cone));
+            let block = if shaped { capsules_of(index).and_then(|capsule| map.block_depth_bound(&capsule, columns, rows)) } else { None };
+            match block {
+                Some(bound) if bound > global => bound,
+                _ => global,
+            }
+        };
         let block_depth = |object: u16, columns: (u16, u16), rows: (u16, u16)| -> N {
             let index = usize::from(object);
             let global = near.get(index).copied().unwrap_or(-N::MAX);
@@ -159,9 +206,19 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
                 _ => global,
             }
         };
-        let depth: Option<&grid::BlockDepth<'_, N>> =
-            if optimizations.sortlist && tuning.cell_rectangles { Some(&block_depth) } else { None };
-        self.grid.rebuild(&screen, &self.order[..count], &self.extents[..count], polygon, tuning.cell_rectangles, depth);
+        let depth: Option<&grid::BlockDepth<'_, N>> = match (optimizations.sortlist && tuning.cell_rectangles, capsules) {
+            (false, _) => None,
+            (true, false) => Some(&block_depth),
+            (true, true) => Some(&block_capsule),
+        };
+        let cells = match (tuning.cell_rectangles, capsules) {
+            (false, _) => grid::CellShape::Rectangles,
+            (true, false) => grid::CellShape::Polygons,
+            (true, true) => grid::CellShape::Octagons,
+        };
+        let (Some(order), Some(extents)) = (self.order.get(..count), self.extents.get(..count)) else { return };
+        let stadium = |index: usize| stadiums.get(index).copied().flatten();
+        self.grid.rebuild(&screen, order, extents, polygon, stadium, cells, depth);
     }
 
     /// Grid: the entries of the pixel's cell and the pixel's offsets in it; `None` without a grid.
