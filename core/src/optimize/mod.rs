@@ -67,8 +67,6 @@ pub struct Acceleration<N, const MAX_OBJECTS: usize> {
     extents: [Extent; MAX_OBJECTS],
     /// Lower bound of the `t` of any hit on each object (`−N::MAX`: none known).
     near: [N; MAX_OBJECTS],
-    /// Each object's bounding capsule, for the grid's per-entry depth bounds (our tuning).
-    capsules: [Capsule<N>; MAX_OBJECTS],
     #[cfg(feature = "acceleration-tables")]
     shadow: [ShadowBound<N>; MAX_OBJECTS],
     grid: Grid<N, MAX_OBJECTS>,
@@ -96,7 +94,6 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
         order: [0; MAX_OBJECTS],
         extents: [Extent { first_column: 0, last_column: 0, first_row: 0, last_row: 0, diagonal: [0; 4] }; MAX_OBJECTS],
         near: [N::ZERO; MAX_OBJECTS],
-        capsules: [Capsule::UNSET; MAX_OBJECTS],
         #[cfg(feature = "acceleration-tables")]
         shadow: [ShadowBound::UNSET; MAX_OBJECTS],
         grid: Grid::UNSET,
@@ -116,7 +113,6 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
         }
         self.extents.fill(Extent::whole(&screen));
         self.near.fill(-N::MAX);
-        self.capsules.fill(Capsule::UNSET);
         #[cfg(feature = "acceleration-tables")]
         self.shadow.fill(ShadowBound::always());
         let corners = window_corners(&screen, camera);
@@ -127,6 +123,8 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
         // Each object's silhouette as a stadium for the grid's cells (on the stack: 20 bytes an
         // object while the grid is built).
         let mut stadiums: [Option<capsule::Stadium>; MAX_OBJECTS] = [None; MAX_OBJECTS];
+        // And each object's capsule for the grid's per-entry depth bounds (28 bytes in f32).
+        let mut stored = [Capsule::UNSET; MAX_OBJECTS];
         for (index, description) in objects.iter().take(count).enumerate() {
             // The geometry as the tracer will see it: the inverse rounded to N, inverted back.
             let Some(geometry) = rendered_geometry::<N>(description) else { continue };
@@ -136,7 +134,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
             } else {
                 Capsule::UNSET
             };
-            if let Some(slot) = self.capsules.get_mut(index) {
+            if let Some(slot) = stored.get_mut(index) {
                 *slot = capsule;
             }
             // Pixelbuffer fills the extents' octagons (`render::fill_volumes`).
@@ -176,7 +174,6 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
             self.grid.clear();
             return;
         }
-        let stored = &self.capsules;
         let capsules_of = |index: usize| stored.get(index).copied();
         let polygon = |index: usize| match objects.get(index).and_then(rendered_geometry::<N>) {
             Some(geometry) => screen.project_object(&geometry, tuning.tight_silhouettes),
