@@ -7,7 +7,14 @@
 //! divisor is zero, and powers are integer powers.
 //! Scene set-up (matrix composition, inversion, trigonometry) is done once in `f64` and
 //! converted with [`Number::from_f64`]; only per-pixel work runs in the number type.
+//!
+//! [`F32With<S>`](F32With) is `f32` with the square root of a [`SquareRoot`] `S` and every
+//! other operation `f32`'s, bit for bit: `F32Micro` is `F32With<Micromath>` (feature
+//! `micromath`, an approximate square root); with a correctly rounded square root from outside
+//! the crate (which forbids `unsafe`, and stable `core` has no `f32` square root) the images
+//! are `f32`'s.
 
+mod f32_with;
 #[cfg(feature = "fixed-point")]
 mod fixed;
 mod float;
@@ -16,10 +23,11 @@ mod micromath;
 #[cfg(feature = "soft-float")]
 mod soft_float;
 
+pub use f32_with::{F32With, SquareRoot};
 #[cfg(feature = "fixed-point")]
 pub use fixed::{Fixed, Fixed16};
 #[cfg(feature = "micromath")]
-pub use micromath::F32Micro;
+pub use micromath::{F32Micro, Micromath};
 #[cfg(feature = "soft-float")]
 pub use soft_float::SoftFloat;
 
