@@ -10,9 +10,10 @@
 //!
 //! [`F32With<S>`](F32With) is `f32` with the square root of a [`SquareRoot`] `S` and every
 //! other operation `f32`'s, bit for bit: `F32Micro` is `F32With<Micromath>` (feature
-//! `micromath`, an approximate square root); with a correctly rounded square root from outside
-//! the crate (which forbids `unsafe`, and stable `core` has no `f32` square root) the images
-//! are `f32`'s.
+//! `micromath`, an approximate square root), and the firmware on the Cortex-M4F computes its
+//! `f32` as `F32With<VsqrtF32>`, the FPU's correctly rounded `vsqrt.f32`, which this crate
+//! cannot emit (it forbids `unsafe`, and stable `core` has no `f32` square root); that build's
+//! images stay `f32`'s, and its name is `f32`.
 
 mod f32_with;
 #[cfg(feature = "fixed-point")]
