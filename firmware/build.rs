@@ -8,6 +8,8 @@
 //! Environment (all optional):
 //! - `MICROTRACE_SCENE`: absolute path of a `.mts` file (default: `../scenes/snooker.mts`).
 //! - `MICROTRACE_NUMBER`: `f64`, `f32`, `fixed`, `fixed16`, `f32-micromath` or `soft32` (default `f32`).
+//!   On the mps2-an386 (Cortex-M4F) `f32` is `F32With<VsqrtF32>`: the FPU's square root,
+//!   the same results (src/board/mps2_an386/fpu_sqrt.rs).
 //! - `MICROTRACE_SIZE`: `WIDTHxHEIGHT` of the render (default `128x64`, the OLED).
 //! - `MICROTRACE_OPT`: `scene` (default: keep the scene's `optimize`), `all`, `none`, or a comma
 //!   list of `pixelbuffer,extents,grid,sortlist`.
@@ -35,7 +37,8 @@ fn main() {
         println!("cargo:rerun-if-env-changed={name}");
     }
 
-    let number = number_type(&env("MICROTRACE_NUMBER").unwrap_or_else(|| "f32".into()));
+    let number_name = env("MICROTRACE_NUMBER").unwrap_or_else(|| "f32".into());
+    let number = number_type(&number_name, board);
     let (width, height) = render_size(&env("MICROTRACE_SIZE").unwrap_or_else(|| "128x64".into()));
 
     let text = std::fs::read(&scene_path)
@@ -48,7 +51,7 @@ fn main() {
     }
     check_primitives(&description, &scene_path);
 
-    let source = generate(&description, &scene_path, number, board);
+    let source = generate(&description, &scene_path, number, &number_name, board);
     std::fs::write(out_dir.join("scene.rs"), source).unwrap();
 }
 
@@ -101,9 +104,18 @@ fn copy_memory_layout(manifest_dir: &Path, out_dir: &Path, board: Board) {
 
 /// The Rust type the tracer computes in, and the firmware feature it needs (a new number type
 /// goes here, in Cargo.toml's features and in xtask's `number_feature`).
-fn number_type(name: &str) -> &'static str {
+fn number_type(name: &str, board: Board) -> &'static str {
+    // The Cortex-M4F's FPU has `vsqrt.f32`, which the core cannot emit (libm's `sqrtf` is
+    // integer code there); it is correctly rounded, so the image is plain f32's. Only with the
+    // hard-float ABI (an FPU); the lm3s6965evb has none. `cfg(vsqrt_f32)` compiles the module.
+    println!("cargo:rustc-check-cfg=cfg(vsqrt_f32)");
+    let hard_float = env("CARGO_CFG_TARGET_ABI").as_deref() == Some("eabihf");
     let (type_name, feature) = match name {
         "f64" => ("f64", None),
+        "f32" if matches!(board, Board::Mps2An386) && hard_float => {
+            println!("cargo:rustc-cfg=vsqrt_f32");
+            ("microtrace::number::F32With<crate::board::VsqrtF32>", None)
+        }
         "f32" => ("f32", None),
         "fixed" => ("microtrace::number::Fixed", Some("fixed-point")),
         "fixed16" => ("microtrace::number::Fixed16", Some("fixed-point")),
@@ -182,7 +194,13 @@ fn floats<const K: usize>(values: [f64; K]) -> String {
     format!("[{}]", items.join(", "))
 }
 
-fn generate<const N: usize>(description: &SceneDescription<N>, scene_path: &Path, number: &str, board: Board) -> String {
+fn generate<const N: usize>(
+    description: &SceneDescription<N>,
+    scene_path: &Path,
+    number: &str,
+    number_name: &str,
+    board: Board,
+) -> String {
     let mut out = String::new();
     let d = description;
     let v = d.viewport;
@@ -210,7 +228,8 @@ fn generate<const N: usize>(description: &SceneDescription<N>, scene_path: &Path
     writeln!(out, "use microtrace::shading::{{Palette, Rgb4}};").unwrap();
     writeln!(out, "/// The number type the tracer computes in (`MICROTRACE_NUMBER`).").unwrap();
     writeln!(out, "pub type Number = {number};").unwrap();
-    writeln!(out, "pub const NUMBER_NAME: &str = {:?};", number).unwrap();
+    writeln!(out, "/// Its name in the report (`MICROTRACE_NUMBER`: `f32` also when the square root is the FPU's).").unwrap();
+    writeln!(out, "pub const NUMBER_NAME: &str = {:?};", number_name).unwrap();
     writeln!(out, "pub const BOARD_NAME: &str = {:?};", board.name()).unwrap();
     writeln!(out, "pub const SCENE_NAME: &str = {:?};", scene_name).unwrap();
     writeln!(out, "pub const WIDTH: u16 = {};", v.width()).unwrap();

@@ -7,7 +7,15 @@
 //! divisor is zero, and powers are integer powers.
 //! Scene set-up (matrix composition, inversion, trigonometry) is done once in `f64` and
 //! converted with [`Number::from_f64`]; only per-pixel work runs in the number type.
+//!
+//! [`F32With<S>`](F32With) is `f32` with the square root of a [`SquareRoot`] `S` and every
+//! other operation `f32`'s, bit for bit: `F32Micro` is `F32With<Micromath>` (feature
+//! `micromath`, an approximate square root), and the firmware on the Cortex-M4F computes its
+//! `f32` as `F32With<VsqrtF32>`, the FPU's correctly rounded `vsqrt.f32`, which this crate
+//! cannot emit (it forbids `unsafe`, and stable `core` has no `f32` square root); that build's
+//! images stay `f32`'s, and its name is `f32`.
 
+mod f32_with;
 #[cfg(feature = "fixed-point")]
 mod fixed;
 mod float;
@@ -16,10 +24,11 @@ mod micromath;
 #[cfg(feature = "soft-float")]
 mod soft_float;
 
+pub use f32_with::{F32With, SquareRoot};
 #[cfg(feature = "fixed-point")]
 pub use fixed::{Fixed, Fixed16};
 #[cfg(feature = "micromath")]
-pub use micromath::F32Micro;
+pub use micromath::{F32Micro, Micromath};
 #[cfg(feature = "soft-float")]
 pub use soft_float::SoftFloat;
 

@@ -3,6 +3,13 @@
 //! to the host as `framebuffer.bin` only. The memory layout (memory.x beside this file) uses
 //! 256 KB of code and 64 KB of RAM of QEMU's 4 MB + 4 MB, to stand for a small part.
 
+// The FPU's `vsqrt.f32` for the tracer's `f32`: build.rs sets `vsqrt_f32` when the number
+// type uses it (MICROTRACE_NUMBER=f32 with the hard-float ABI).
+#[cfg(vsqrt_f32)]
+mod fpu_sqrt;
+#[cfg(vsqrt_f32)]
+pub use fpu_sqrt::VsqrtF32;
+
 /// No display on this board; the type is there so the shared code has one to name.
 pub type Display = crate::display::NoDisplay;
 
