@@ -128,12 +128,10 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
         for (index, description) in objects.iter().take(count).enumerate() {
             // The geometry as the tracer will see it: the inverse rounded to N, inverted back.
             let Some(geometry) = rendered_geometry::<N>(description) else { continue };
-            let capsule = if capsules {
-                let (start, end, radius) = geometry.bounding_capsule();
-                Capsule::new(start, end, radius)
-            } else {
-                Capsule::UNSET
-            };
+            // The bounding capsule (f64, the object's alone), for the screen and the shadows.
+            let needs_capsule = capsules || (cfg!(feature = "acceleration-tables") && tuning.shadow_culling && optimizations.extents);
+            let (start, end, radius) = if needs_capsule { geometry.bounding_capsule() } else { ([0.0; 3], [0.0; 3], f64::INFINITY) };
+            let capsule = if capsules { Capsule::new(start, end, radius) } else { Capsule::UNSET };
             if let Some(slot) = stored.get_mut(index) {
                 *slot = capsule;
             }
@@ -160,7 +158,6 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
             }
             #[cfg(feature = "acceleration-tables")]
             if tuning.shadow_culling && optimizations.extents {
-                let (start, end, radius) = geometry.bounding_capsule();
                 self.shadow[index] = ShadowBound::new(start, end, radius);
             }
         }
