@@ -118,14 +118,11 @@ pub struct LightFootprint<N> {
     /// axis, cosine of the widened half-angle). A shadow ray from P can meet the object only if
     /// the direction from the light to P lies in the cone. `(zero, −1)`: always inside.
     pub cone: (Vector3<N>, N),
-    /// A box holding every direction of the cone (point light: |d − axis| ≤ √(2 − 2·cos)), or
-    /// the sphere's cross-section seen along the light (directional: the centre projected on
-    /// the plane through the origin perpendicular to the light, ± reach). Two objects whose
-    /// boxes are disjoint cannot both meet one shadow ray.
-    pub low: [N; 3],
-    pub high: [N; 3],
-    /// The middle of the box and its half-size: the box's inscribed ball holds the same set,
-    /// so two footprints whose balls are apart cannot share a shadow ray either.
+    /// A ball (and so the box `centre ± radius`) holding every direction of the cone (point
+    /// light: |d − axis| ≤ √(2 − 2·cos)), or the sphere's cross-section seen along the light
+    /// (directional: the centre projected on the plane through the origin perpendicular to
+    /// the light, ± reach). Two objects whose balls (or boxes) are apart cannot both meet one
+    /// shadow ray.
     pub centre: Vector3<N>,
     pub radius: N,
     /// The range of distances from the light (directional: of depth along the light) over
@@ -139,8 +136,6 @@ impl<N: Number> LightFootprint<N> {
     pub fn always() -> Self {
         Self {
             cone: (Vector3::zero(), -N::ONE),
-            low: [-N::MAX; 3],
-            high: [N::MAX; 3],
             centre: Vector3::zero(),
             radius: N::MAX,
             near: -N::MAX,
@@ -166,7 +161,18 @@ impl<N: Number> LightFootprint<N> {
 
     #[inline]
     fn overlaps(&self, other: &Self) -> bool {
-        (0..3).all(|k| self.low[k] <= other.high[k] && other.low[k] <= self.high[k])
+        (0..3).all(|k| self.low(k) <= other.high(k) && other.low(k) <= self.high(k))
+    }
+
+    /// The box's low and high ends along axis `k`.
+    #[inline]
+    fn low(&self, k: usize) -> N {
+        self.centre.component(k) - self.radius
+    }
+
+    #[inline]
+    fn high(&self, k: usize) -> N {
+        self.centre.component(k) + self.radius
     }
 }
 
@@ -209,11 +215,8 @@ impl<N: Number> ShadowBound<N> {
                 }
                 let chord = ((N::ONE - cosine) + (N::ONE - cosine)).sqrt();
                 let chord = chord + slack(chord) + slack(N::ONE);
-                let axis_array = axis.to_array();
                 LightFootprint {
                     cone: (axis, cosine),
-                    low: axis_array.map(|a| a - chord),
-                    high: axis_array.map(|a| a + chord),
                     centre: axis,
                     radius: chord,
                     near: distance - reach,
@@ -226,8 +229,6 @@ impl<N: Number> ShadowBound<N> {
                 let reach = self.reach + margin(self.reach) + margin(self.centre.largest_component()) + margin(height);
                 LightFootprint {
                     cone: (Vector3::zero(), -N::ONE),
-                    low: across.to_array().map(|a| a - reach),
-                    high: across.to_array().map(|a| a + reach),
                     centre: across,
                     radius: reach,
                     near: -height - reach,
@@ -258,13 +259,13 @@ pub fn blocker_table<N: Number>(footprints: &[LightFootprint<N>], order: &mut [u
     for (index, place) in order.iter_mut().enumerate() {
         *place = index as u16;
     }
-    let low_x = |index: u16| footprints.get(usize::from(index)).map_or(-N::MAX, |f| f.low[0]);
+    let low_x = |index: u16| footprints.get(usize::from(index)).map_or(-N::MAX, |f| f.low(0));
     super::sortlist::sort_by_bound(order, |index| low_x(index as u16));
     for (position, &first) in order.iter().enumerate() {
         let Some(a) = footprints.get(usize::from(first)) else { continue };
         for &second in order.iter().skip(position + 1) {
             let Some(b) = footprints.get(usize::from(second)) else { continue };
-            if b.low[0] > a.high[0] {
+            if b.low(0) > a.high(0) {
                 break;
             }
             let (i, j) = (usize::from(first), usize::from(second));

@@ -273,21 +273,33 @@ fn with_shadow_culling<N: Number, R, const MAX_OBJECTS: usize>(
     let mut count = 0;
     if scene.shadows && scene.acceleration.culls_shadows() {
         count = scene.objects.len().min(MAX_OBJECTS);
-        let light = match scene.light {
-            PreparedLight::Point(position) => LightPosition::Point(position),
-            PreparedLight::Direction(direction) => LightPosition::Direction(direction),
-        };
-        let footprints: [LightFootprint<N>; MAX_OBJECTS] = core::array::from_fn(|index| {
-            if index < count { scene.acceleration.light_footprint(index, light) } else { LightFootprint::always() }
-        });
-        for (cone, footprint) in light_cones.iter_mut().zip(&footprints) {
-            *cone = footprint.cone;
-        }
-        let mut order = [0u16; MAX_OBJECTS];
-        blocker_table(&footprints[..count], &mut order, &mut blockers);
+        build_shadow_tables(scene, count, &mut light_cones, &mut blockers);
     }
     let cone_count = if matches!(scene.light, PreparedLight::Point(_)) { count } else { 0 };
     body(&ShadowCulling { light_cones: light_cones.get(..cone_count).unwrap_or(&[]), blockers: blockers.get(..count).unwrap_or(&[]) })
+}
+
+/// The footprints and the blocker table, out of line: the footprints (40 bytes an object in
+/// `f32`) are off the stack before the render's frames are on it.
+#[cfg(feature = "acceleration-tables")]
+#[inline(never)]
+fn build_shadow_tables<N: Number, const MAX_OBJECTS: usize>(
+    scene: &Scene<N, MAX_OBJECTS>,
+    count: usize,
+    light_cones: &mut [(Vector3<N>, N); MAX_OBJECTS],
+    blockers: &mut [u128; MAX_OBJECTS],
+) {
+    let light = match scene.light {
+        PreparedLight::Point(position) => LightPosition::Point(position),
+        PreparedLight::Direction(direction) => LightPosition::Direction(direction),
+    };
+    let footprints: [LightFootprint<N>; MAX_OBJECTS] =
+        core::array::from_fn(|index| if index < count { scene.acceleration.light_footprint(index, light) } else { LightFootprint::always() });
+    for (cone, footprint) in light_cones.iter_mut().zip(&footprints) {
+        *cone = footprint.cone;
+    }
+    let mut order = [0u16; MAX_OBJECTS];
+    blocker_table(footprints.get(..count).unwrap_or(&[]), &mut order, blockers);
 }
 
 #[cfg(not(feature = "acceleration-tables"))]
