@@ -315,6 +315,12 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
         self.grid.entries()
     }
 
+    /// Sortlist's lower bound of `t` for the object, as the render uses it (`None`: none known,
+    /// or Sortlist off).
+    pub fn near_bound(&self, object: usize) -> Option<N> {
+        self.near.get(object).copied().filter(|near| *near != -N::MAX)
+    }
+
     pub fn extent(&self, object: usize) -> Option<Extent> {
         self.extents.get(object).copied()
     }

@@ -69,7 +69,9 @@ impl PlanView {
                 };
                 let mut points = geometry.volume().map(|[x, _, z]| [x, z]);
                 let footprint = Polygon::hull(&mut points).vertices().to_vec();
-                let near = sortlist::depth_bound(screen, &corners, &geometry);
+                // The near end as the render uses it (in the number type); the far end, which
+                // nothing uses, from the f64 volume.
+                let near = scene.acceleration.near_bound(object).map(Number::to_f64).or_else(|| sortlist::depth_bound(screen, &corners, &geometry));
                 let far = sortlist::far_depth_bound(screen, &geometry);
                 PlanObject { object, footprint, depth: near.zip(far) }
             })
