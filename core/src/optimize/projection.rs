@@ -246,9 +246,10 @@ impl Screen {
     /// The silhouette of the part of the hull of `points` (which contains the object) that a
     /// primary ray can reach (B16): the hull clipped to depth ≥ ε/2 ([`Screen::clip_depth`]),
     /// the points in front and the crossings of every segment between a point in front and one
-    /// behind, projected. Within the window it is exactly the hull's projection; the part
-    /// nearer than ε, cut off, lies beyond the window. Out of line, so that the scratch hull
-    /// costs stack only for objects that reach the eye plane.
+    /// behind, projected. Within the window it holds every point of the object a ray can reach
+    /// (and is the hull's own projection when ε came from a frustum face); the part cut off
+    /// lies beyond the widened window or nearer than the object. Out of line, so that the
+    /// scratch hull costs stack only for objects that reach the eye plane.
     #[inline(never)]
     fn project_clipped(&self, geometry: &ObjectGeometry, points: &[[f64; 3]]) -> Projected {
         let View::Perspective { eye: e } = self.view else { return Projected::Whole };
