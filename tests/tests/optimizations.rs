@@ -5,7 +5,9 @@
 //! PGA and RGB mode. The generator is a fixed-seed xorshift, so a failure names its seed.
 
 use microtrace::geometry::Matrix4;
-use microtrace::number::Number;
+use microtrace::number::{Fixed, Number};
+use microtrace::optimize::bounding_volume::ObjectGeometry;
+use microtrace::optimize::extents::Extent;
 use microtrace::optimize::Acceleration;
 use microtrace::pixel::FrameBuffer;
 use microtrace::render::{render_pga, render_rgb, Statistics};
@@ -188,6 +190,119 @@ fn random_scene(seed: u64) -> SceneDescription<CAPACITY> {
     scene.shadows = rng.below(3) != 0;
     scene.dither = rng.below(2) == 0;
     scene
+}
+
+/// A perspective scene whose objects reach the eye plane (digest B16, where the silhouettes are
+/// clipped): a ground slab under (or over, or beside) the eye reaching far behind it, rods
+/// passing beside the eye through its plane, and a few objects straddling that plane.
+fn eye_plane_scene(seed: u64) -> SceneDescription<CAPACITY> {
+    let mut rng = XorShift(seed.wrapping_mul(0xD1B5_4A32_D192_ED03) | 1);
+    let mut scene = SceneDescription::<CAPACITY>::default();
+    let (width, height) = (12 + rng.below(30) as u16, 10 + rng.below(30) as u16);
+    scene.viewport = Viewport { x1: 0, x2: width - 1, y1: 0, y2: height - 1 };
+    let half = rng.range(1.0, 6.0);
+    let (cx, cy) = (rng.range(-3.0, 3.0), rng.range(-3.0, 3.0));
+    scene.window = Window { x1: cx - half, x2: cx + half, y1: cy - half * rng.range(0.5, 1.5), y2: cy + half };
+    scene.view_plane = rng.range(-20.0, 20.0);
+    let span = if rng.below(2) == 0 { rng.range(2.0, 15.0) } else { -rng.range(2.0, 15.0) };
+    let eye = [rng.range(-3.0, 3.0), rng.range(-3.0, 3.0), scene.view_plane - span];
+    scene.projection = Projection::Perspective { eye };
+    let along = |s: f64, o: [f64; 2]| [eye[0] + (o[0] - eye[0]) * s, eye[1] + (o[1] - eye[1]) * s, eye[2] + span * s];
+    let material = |rng: &mut XorShift| Material {
+        colour: rng.below(16) as u8,
+        ka: rng.range(0.0, 1.0),
+        kd: rng.range(0.0, 1.0),
+        ks: rng.range(0.0, 1.0),
+        pwr: rng.range(1.0, 50.0),
+        rnd: rng.range(0.0, 2.0),
+        cmy: [rng.unit(), rng.unit(), rng.unit()],
+    };
+    let push = |scene: &mut SceneDescription<CAPACITY>, primitive: Primitive, m: Matrix4, rng: &mut XorShift| {
+        let mut object = ObjectDescription::new(primitive, scene.objects.len() as u32 + 1);
+        object.world_from_object = m;
+        object.material = material(rng);
+        let _ = scene.objects.push(object);
+    };
+    // The ground: a thin slab at some height off the eye, tilted a little, reaching both ways.
+    if rng.below(4) != 0 {
+        let mut m = Matrix4::IDENTITY;
+        m.translate([-0.5, -0.5, -1.0]);
+        m.scale([rng.range(20.0, 200.0), rng.range(20.0, 200.0), rng.range(0.01, 1.0)]);
+        m.rotate(0, 90.0 + rng.range(-20.0, 20.0));
+        m.rotate(2, if rng.below(3) == 0 { rng.range(-180.0, 180.0) } else { rng.range(-10.0, 10.0) });
+        m.translate([eye[0] + rng.range(-3.0, 3.0), eye[1] - rng.range(0.2, 3.0) * half / span.abs().max(1.0) * 5.0, eye[2] + rng.range(-5.0, 5.0)]);
+        push(&mut scene, Primitive::Cube, m, &mut rng);
+    }
+    // Rods and cones through the eye plane, beside the eye.
+    for _ in 0..rng.below(5) {
+        let mut m = Matrix4::IDENTITY;
+        let radius = rng.range(0.05, 1.0);
+        m.scale([radius, radius, rng.range(5.0, 60.0)]);
+        m.translate([0.0, 0.0, -0.5 * m.rows[2][2]]);
+        m.rotate(0, rng.range(-60.0, 60.0));
+        m.rotate(1, rng.range(-60.0, 60.0));
+        let beside = [rng.range(-1.0, 1.0), rng.range(-1.0, 1.0)];
+        let distance = rng.range(radius * 1.5, 8.0);
+        let length = (beside[0] * beside[0] + beside[1] * beside[1]).sqrt().max(1e-3);
+        m.translate([eye[0] + beside[0] / length * distance, eye[1] + beside[1] / length * distance, eye[2] + rng.range(-2.0, 2.0)]);
+        let primitive = if rng.below(3) == 0 { Primitive::Cone } else { Primitive::Cylinder };
+        push(&mut scene, primitive, m, &mut rng);
+    }
+    // Objects of any kind around the eye plane, and some in view.
+    for _ in 0..1 + rng.below(5) {
+        let primitive = Primitive::ALL[rng.below(4) as usize];
+        let o = [rng.range(scene.window.x1, scene.window.x2), rng.range(scene.window.y1, scene.window.y2)];
+        let s = if rng.below(2) == 0 { rng.range(-0.2, 0.3) } else { rng.range(0.5, 3.0) };
+        let mut centre = along(s, o);
+        centre[0] += rng.range(-half, half);
+        centre[1] += rng.range(-half, half);
+        let size = half * rng.range(0.3, 2.0);
+        let m = random_matrix(&mut rng, centre, size);
+        push(&mut scene, primitive, m, &mut rng);
+    }
+    scene.light = if rng.below(2) == 0 { Light::Point(along(rng.range(0.5, 2.0), [cx, cy + half])) } else { Light::Direction(rng.direction()) };
+    scene.shadows = rng.below(3) != 0;
+    scene.dither = rng.below(2) == 0;
+    scene
+}
+
+/// Objects reaching the eye plane (grounds, rods, objects around the eye): every combination
+/// renders as none (f64, f32, and every fourth scene in Q32.32), and most such objects are
+/// clipped, not the whole screen.
+#[test]
+fn eye_plane_scenes_render_identically_under_every_combination() {
+    let seeds = std::env::var("MICROTRACE_SEEDS").ok().and_then(|text| text.parse().ok()).unwrap_or(300u64) / 3;
+    let (mut tests_all, mut tests_none) = (0u64, 0u64);
+    let (mut reaching, mut clipped) = (0usize, 0usize);
+    for seed in 0..seeds {
+        let scene = eye_plane_scene(seed);
+        let label = format!("eye-plane scene seed {seed}");
+        // How many objects' volumes straddle the eye plane, and how many of those are clipped
+        // (an extent short of the whole screen).
+        let prepared = Box::new(Scene::<f64, CAPACITY>::prepare(&scene).unwrap());
+        let screen = prepared.acceleration.screen();
+        let Projection::Perspective { eye } = scene.projection else { unreachable!() };
+        let depth = |p: &[f64; 3]| (p[2] - eye[2]) / (scene.view_plane - eye[2]);
+        for (index, object) in prepared.objects.iter().enumerate() {
+            let volume = ObjectGeometry::new(object.primitive, &object.object_from_world).unwrap().volume();
+            if volume.iter().any(|p| depth(p) <= 0.0) && volume.iter().any(|p| depth(p) > 0.0) {
+                reaching += 1;
+                clipped += usize::from(prepared.acceleration.extent(index) != Some(Extent::whole(screen)));
+            }
+        }
+        let rgb = seed % 2 == 1;
+        let (all, none) = all_combinations_match::<f64>(&scene, rgb, &label);
+        all_combinations_match::<f32>(&scene, !rgb, &label);
+        // Near the eye a ray's rounding matters most: every fourth scene also in Q32.32.
+        if seed % 4 == 0 && Scene::<Fixed, CAPACITY>::prepare(&scene).is_ok() {
+            all_combinations_match::<Fixed>(&scene, rgb, &label);
+        }
+        tests_all += all.ro_tests;
+        tests_none += none.ro_tests;
+    }
+    println!("{seeds} eye-plane scenes: {tests_all} tests all-on against {tests_none} with none; {clipped} of {reaching} objects through the eye plane clipped");
+    assert!(clipped * 2 > reaching, "{clipped} of {reaching} objects through the eye plane clipped");
+    assert!(tests_all * 2 < tests_none, "the optimizations skip too little");
 }
 
 #[test]

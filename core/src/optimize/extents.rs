@@ -34,7 +34,7 @@ impl Extent {
     }
 
     /// The rectangle of projected points (with the projection margin), or the whole screen for
-    /// a volume without a projection (digest B16, B17).
+    /// a volume without a projection (the eye in or at it, B16; rays along the view plane, B17).
     pub fn of(screen: &Screen, projected: &Projected) -> Self {
         let points = match projected {
             Projected::Points(points) => points,

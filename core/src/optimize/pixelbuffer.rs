@@ -14,8 +14,9 @@
 //! of rows [r − MARGIN, r + MARGIN], widened by MARGIN, so a pixel whose sample point is within
 //! half a pixel of the hull is always filled. Every hull edge is a segment between two of the
 //! 8 points, and every such segment lies in the hull, so clipping all 28 segments (and the
-//! points) to the band gives exactly the hull's x-range in the band. Volumes without a
-//! projection (at or behind the eye, parallel rays along the view plane) fill the whole screen.
+//! points) to the band gives exactly the hull's x-range in the band. A volume reaching the eye
+//! plane is clipped there first (`projection`, B16); volumes without a projection (the eye in
+//! or at them, parallel rays along the view plane) fill the whole screen.
 
 use super::projection::{Polygon, Screen, MARGIN};
 

@@ -8,7 +8,8 @@
 //!   ellipsoid); with d.z = 0, t = d·p − d·o, bounded with the window corner maximising d·o;
 //! - perspective: t is the distance from the eye (unit directions), bounded below by the
 //!   largest signed distance to the volume's face planes (and for a sphere by
-//!   |eye − centre| minus its largest semi-axis).
+//!   |eye − centre| minus its largest semi-axis); for a volume reaching the eye plane also by
+//!   its clip depth ε: a ray reaches it only at depth ≥ ε, so t ≥ ε·|D − eye.z|.
 //!
 //! Bounds are computed in `f64` and lowered by a margin before conversion, so rounding in the
 //! number type cannot make an object's computed `t` fall below its bound. The loop breaks only
@@ -31,7 +32,16 @@ pub fn depth_bound(screen: &Screen, corners: &[[f64; 3]; 4], geometry: &ObjectGe
                 geometry.min_linear(d) - origin_max
             }
         }
-        View::Perspective { eye } => geometry.distance_lower_bound(eye),
+        View::Perspective { eye } => {
+            let bound = geometry.distance_lower_bound(eye);
+            // A volume reaching the eye plane is seen only beyond its clip depth (B16).
+            let volume = geometry.volume();
+            let reaches = volume.iter().any(|p| screen.project(*p).is_none());
+            match reaches.then(|| screen.clip_depth(&volume, geometry)).flatten() {
+                Some(depth) if depth.is_finite() => bound.max(depth * (screen.view_plane - eye[2]).abs()),
+                _ => bound,
+            }
+        }
     };
     bound.is_finite().then(|| bound - 1e-3 * (bound.abs() + 1.0))
 }

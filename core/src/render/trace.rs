@@ -239,7 +239,7 @@ where
             Projected::Points(points) => points,
             Projected::Invisible => continue,
             Projected::Whole => {
-                // No projection (at or behind the eye, or rays along the view plane): all.
+                // No projection (the eye in or at the volume, or rays along the view plane): all.
                 for row in rows.clone() {
                     sink.fill_row(0, row, width, fill);
                 }
