@@ -135,9 +135,15 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
             if let Some(slot) = stored.get_mut(index) {
                 *slot = capsule;
             }
+            // A capsule that reaches the eye plane covers the whole screen; its object's f64
+            // silhouette clipped at the eye plane (`projection`, B16) does better. Only such
+            // objects take that path (the thesis scenes have none).
+            let reaches_eye = capsules && map.cover(&capsule) == capsule::Covered::Whole && capsule.radius != N::MAX;
             // Pixelbuffer fills the extents' octagons (`render::fill_volumes`).
             if optimizations.extents || optimizations.grid || (optimizations.pixelbuffer && capsules) {
-                self.extents[index] = if capsules {
+                self.extents[index] = if reaches_eye {
+                    Extent::of(&screen, &screen.project_object(&geometry, true))
+                } else if capsules {
                     let (covered, stadium) = map.cover_and_stadium(&capsule);
                     if let Some(slot) = stadiums.get_mut(index) {
                         *slot = stadium;
@@ -148,7 +154,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
                 };
             }
             if optimizations.sortlist {
-                if capsules {
+                if capsules && !reaches_eye {
                     if let Some(bound) = map.depth_bound(&capsule) {
                         self.near[index] = bound;
                     }
