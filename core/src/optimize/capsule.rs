@@ -401,23 +401,23 @@ fn disc<N: Number>(height: u16, ranges: &[(N, N); FUNCTIONS]) -> ([N; 2], N) {
 /// arithmetic only, for the grid's per-cell rectangles of thin oblique objects.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Stadium {
-    pub ends: [[i32; 2]; 2],
-    pub radius: i32,
+    pub ends: [[i16; 2]; 2],
+    pub radius: i16,
 }
 
 /// Sixteenths of a pixel per pixel.
 const SUBPIXELS: i32 = 16;
 /// The segment parameter's scale in [`Stadium::block`].
 const T_ONE: i32 = 1024;
-/// Coordinates beyond this many pixels are not converted (the products stay within `i32`).
-const STADIUM_LIMIT: i32 = 16_384;
+/// Coordinates beyond this many pixels are not converted (sixteenths fit an `i16`).
+const STADIUM_LIMIT: i32 = 2_000;
 
 impl Stadium {
     /// From two discs in pixels; `None` when a value is beyond [`STADIUM_LIMIT`] pixels.
     fn of_discs<N: Number>(first: ([N; 2], N), second: ([N; 2], N)) -> Option<Self> {
         let limit = N::from_i32(STADIUM_LIMIT);
         let fits = |v: N| v.abs() < limit;
-        let sixteenths = |v: N| v.times_power_of_two(4).floor_to_i32();
+        let sixteenths = |v: N| v.times_power_of_two(4).floor_to_i32().clamp(-32_767, 32_767) as i16;
         let radius = first.1.max(second.1);
         if !(fits(first.0[0]) && fits(first.0[1]) && fits(second.0[0]) && fits(second.0[1]) && fits(radius)) {
             return None;
@@ -425,7 +425,7 @@ impl Stadium {
         // Each centre is floored to a sixteenth: one more sixteenth of radius covers that.
         Some(Self {
             ends: [[sixteenths(first.0[0]), sixteenths(first.0[1])], [sixteenths(second.0[0]), sixteenths(second.0[1])]],
-            radius: sixteenths(radius) + 2,
+            radius: sixteenths(radius).saturating_add(2),
         })
     }
 
@@ -434,10 +434,10 @@ impl Stadium {
     /// block widened by the radius (Liang–Barsky, its parameter rounded outward), boxed, and
     /// widened by the radius again.
     pub fn block(&self, columns: (u16, u16), rows: (u16, u16)) -> Option<((u16, u16), (u16, u16))> {
-        let r = self.radius;
+        let r = i32::from(self.radius);
         let low = [i32::from(columns.0) * SUBPIXELS - r, i32::from(rows.0) * SUBPIXELS - r];
         let high = [i32::from(columns.1) * SUBPIXELS + r, i32::from(rows.1) * SUBPIXELS + r];
-        let [p, q] = self.ends;
+        let [p, q] = self.ends.map(|end| end.map(i32::from));
         let d = [q[0] - p[0], q[1] - p[1]];
         let (mut t0, mut t1) = (0, T_ONE);
         for k in 0..2 {
@@ -471,6 +471,38 @@ impl Stadium {
             *slot = (first as u16, last as u16);
         }
         Some((out[0], out[1]))
+    }
+}
+
+impl Stadium {
+    /// Whether the sample point of pixel (column, row) lies in the stadium: its squared
+    /// distance to the segment against the squared radius, in `i64` (a product that would
+    /// overflow counts as inside).
+    #[inline]
+    pub fn contains(&self, column: u16, row: u16) -> bool {
+        let [a, b] = self.ends.map(|end| end.map(i64::from));
+        let point = [i64::from(column) * i64::from(SUBPIXELS), i64::from(row) * i64::from(SUBPIXELS)];
+        let r = i64::from(self.radius);
+        let d = [b[0] - a[0], b[1] - a[1]];
+        let w = [point[0] - a[0], point[1] - a[1]];
+        let along = w[0] * d[0] + w[1] * d[1];
+        let squared = d[0] * d[0] + d[1] * d[1];
+        let from = |p: [i64; 2]| {
+            let v = [point[0] - p[0], point[1] - p[1]];
+            v[0] * v[0] + v[1] * v[1]
+        };
+        if along <= 0 || squared == 0 {
+            return from(a) <= r * r;
+        }
+        if along >= squared {
+            return from(b) <= r * r;
+        }
+        // Perpendicular: |w × d|² ≤ r²·|d|².
+        let cross = w[0] * d[1] - w[1] * d[0];
+        match (cross.checked_mul(cross), (r * r).checked_mul(squared)) {
+            (Some(left), Some(right)) => left <= right,
+            _ => true,
+        }
     }
 }
 

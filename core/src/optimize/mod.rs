@@ -67,6 +67,8 @@ pub struct Acceleration<N, const MAX_OBJECTS: usize> {
     extents: [Extent; MAX_OBJECTS],
     /// Lower bound of the `t` of any hit on each object (`−N::MAX`: none known).
     near: [N; MAX_OBJECTS],
+    /// Each object's silhouette as a stadium (our tuning), for the grid and the fill.
+    stadiums: [Option<capsule::Stadium>; MAX_OBJECTS],
     #[cfg(feature = "acceleration-tables")]
     shadow: [ShadowBound<N>; MAX_OBJECTS],
     grid: Grid<N, MAX_OBJECTS>,
@@ -94,6 +96,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
         order: [0; MAX_OBJECTS],
         extents: [Extent { first_column: 0, last_column: 0, first_row: 0, last_row: 0, diagonal: [0; 4] }; MAX_OBJECTS],
         near: [N::ZERO; MAX_OBJECTS],
+        stadiums: [None; MAX_OBJECTS],
         #[cfg(feature = "acceleration-tables")]
         shadow: [ShadowBound::UNSET; MAX_OBJECTS],
         grid: Grid::UNSET,
@@ -113,6 +116,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
         }
         self.extents.fill(Extent::whole(&screen));
         self.near.fill(-N::MAX);
+        self.stadiums.fill(None);
         #[cfg(feature = "acceleration-tables")]
         self.shadow.fill(ShadowBound::always());
         let corners = window_corners(&screen, camera);
@@ -120,9 +124,6 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
         // Our tuning: capsules seen from the eye, in the number type (`capsule`); the thesis's:
         // its volumes projected in f64.
         let capsules = tuning.tight_silhouettes;
-        // Each object's silhouette as a stadium for the grid's cells (on the stack: 20 bytes an
-        // object while the grid is built).
-        let mut stadiums: [Option<capsule::Stadium>; MAX_OBJECTS] = [None; MAX_OBJECTS];
         // And each object's capsule for the grid's per-entry depth bounds (28 bytes in f32).
         let mut stored = [Capsule::UNSET; MAX_OBJECTS];
         for (index, description) in objects.iter().take(count).enumerate() {
@@ -145,7 +146,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
                     Extent::of(&screen, &screen.project_object(&geometry, true))
                 } else if capsules {
                     let (covered, stadium) = map.cover_and_stadium(&capsule);
-                    if let Some(slot) = stadiums.get_mut(index) {
+                    if let Some(slot) = self.stadiums.get_mut(index) {
                         *slot = stadium;
                     }
                     Extent::of_cover(&map, &covered)
@@ -217,6 +218,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
             (true, true) => grid::CellShape::Octagons,
         };
         let (Some(order), Some(extents)) = (self.order.get(..count), self.extents.get(..count)) else { return };
+        let stadiums = &self.stadiums;
         let stadium = |index: usize| stadiums.get(index).copied().flatten();
         self.grid.rebuild(&screen, order, extents, polygon, stadium, cells, depth);
     }
@@ -272,7 +274,8 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
         (self.optimizations.extents && !extent.contains(pixel.column, pixel.row))
             || (self.tuning.tight_silhouettes
                 && (self.optimizations.extents || self.optimizations.grid)
-                && !extent.diagonals_contain(pixel.column, pixel.row, self.screen.height))
+                && (!extent.diagonals_contain(pixel.column, pixel.row, self.screen.height)
+                    || self.stadiums.get(object).copied().flatten().is_some_and(|stadium| !stadium.contains(pixel.column, pixel.row))))
     }
 
     /// Sortlist: whether every hit on `object` (and so on every later candidate) lies beyond
@@ -325,6 +328,11 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
     /// or Sortlist off).
     pub fn near_bound(&self, object: usize) -> Option<N> {
         self.near.get(object).copied().filter(|near| *near != -N::MAX)
+    }
+
+    /// The object's silhouette as a stadium, when it has one (our tuning).
+    pub fn stadium(&self, object: usize) -> Option<capsule::Stadium> {
+        self.stadiums.get(object).copied().flatten()
     }
 
     pub fn extent(&self, object: usize) -> Option<Extent> {

@@ -221,10 +221,18 @@ where
         // no projection per frame.
         for index in 0..scene.objects.len() {
             let Some(extent) = acceleration.extent(index) else { continue };
+            let stadium = acceleration.stadium(index);
             for row in rows.clone() {
-                if let Some((first, last)) = extent.row_span(row, screen.height) {
-                    sink.fill_row(first, row, last - first + 1, fill);
-                }
+                let Some(span) = extent.row_span(row, screen.height) else { continue };
+                // Narrowed by the silhouette's stadium: a thin oblique rod fills a band along it.
+                let span = match stadium {
+                    Some(stadium) => match stadium.block(span, (row, row)) {
+                        Some((columns, _)) => columns,
+                        None => continue,
+                    },
+                    None => span,
+                };
+                sink.fill_row(span.0, row, span.1 - span.0 + 1, fill);
             }
         }
         return;
