@@ -32,6 +32,12 @@ use shadow::ShadowBound;
 /// feature): the grid pool, shadow capsules and tables, and the tight silhouettes.
 pub const TABLES: bool = cfg!(feature = "acceleration-tables");
 
+/// Whether the `f64` silhouette algorithms are compiled in (the `f64-silhouettes` feature): the
+/// thesis's tuning (its projected volumes) and the eye-plane clip of objects whose capsule
+/// reaches the eye. Without it every tuning uses the capsules in the number type, and such an
+/// object covers the whole screen: the same image, more rays.
+pub const SILHOUETTES: bool = cfg!(feature = "f64-silhouettes");
+
 /// Choices beyond the thesis; [`Tuning::IMPROVED`] is the default, [`Tuning::THESIS`] is the
 /// thesis's own algorithms (the 8-vertex volumes, the extent grid, shadow rays unculled).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -123,7 +129,8 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
         let map = ScreenMap::new(camera);
         // Our tuning: capsules seen from the eye, in the number type (`capsule`); the thesis's:
         // its volumes projected in f64.
-        let capsules = tuning.tight_silhouettes;
+        // Without the `f64-silhouettes` feature (the firmware) there are only the capsules.
+        let capsules = tuning.tight_silhouettes || !SILHOUETTES;
         // And each object's capsule for the grid's per-entry depth bounds (28 bytes in f32).
         let mut stored = [Capsule::UNSET; MAX_OBJECTS];
         for (index, description) in objects.iter().take(count).enumerate() {
@@ -139,7 +146,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
             // A capsule that reaches the eye plane covers the whole screen; its object's f64
             // silhouette clipped at the eye plane (`projection`, B16) does better. Only such
             // objects take that path (the thesis scenes have none).
-            let reaches_eye = capsules && map.cover(&capsule) == capsule::Covered::Whole && capsule.radius != N::MAX;
+            let reaches_eye = SILHOUETTES && capsules && map.cover(&capsule) == capsule::Covered::Whole && capsule.radius != N::MAX;
             // Pixelbuffer fills the extents' octagons (`render::fill_volumes`).
             if optimizations.extents || optimizations.grid || (optimizations.pixelbuffer && capsules) {
                 self.extents[index] = if reaches_eye {

@@ -216,7 +216,7 @@ where
         sink.fill_row(0, row, width, flood);
     }
     let acceleration = &scene.acceleration;
-    if acceleration.tuning().tight_silhouettes {
+    if acceleration.tuning().tight_silhouettes || !crate::optimize::SILHOUETTES {
         // Each object's extent octagon, prepared with the other optimizations: integer spans,
         // no projection per frame.
         for index in 0..scene.objects.len() {
