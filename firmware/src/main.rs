@@ -91,7 +91,9 @@ fn main() -> ! {
 /// Out of line: preparing's temporaries are off the stack before the render's are on it.
 #[inline(never)]
 fn prepare(scene: &'static mut PreparedScene) -> &'static PreparedScene {
-    match scene.prepare_in_place(&scene::SCENE, &scene::OBJECTS) {
+    // From the scene prepared ahead at build time in the number type (build.rs): only the
+    // work that depends on the view and the light runs here.
+    match scene.prepare_ahead(&scene::AHEAD) {
         Ok(()) => scene,
         Err(error) => {
             print("microtrace: the scene does not prepare, line ");

@@ -122,6 +122,25 @@ impl<N: Number> Camera<N> {
         }
     }
 
+    /// A camera from its parts in the number type (a scene prepared ahead: `scene::ahead`):
+    /// the sample grid as [`Camera::sampling`] gives it, and the eye of a perspective view or
+    /// the unit direction of a parallel one.
+    pub const fn from_parts(viewport: Viewport, origin: [N; 2], spacing: [N; 2], view_plane: N, eye: Option<Vector3<N>>, direction: Vector3<N>) -> Self {
+        let origin_of_rays = match eye {
+            Some(eye) => RayOrigin::Perspective { eye },
+            None => RayOrigin::Parallel { direction },
+        };
+        Self {
+            viewport,
+            window_x1: origin[0],
+            window_y1: origin[1],
+            spacing_x: spacing[0],
+            spacing_y: spacing[1],
+            view_plane,
+            origin: origin_of_rays,
+        }
+    }
+
     /// The view-plane sample grid: (x of column 0, y of the bottom row), the spacing between
     /// neighbouring samples (zero for a single column or row), and the view plane's z.
     pub fn sampling(&self) -> ([N; 2], [N; 2], N) {

@@ -16,6 +16,18 @@ pub struct AffineTransform<N> {
     pub translation: [N; 3],
 }
 
+impl<N: Copy> AffineTransform<N> {
+    /// From the linear part by columns (`columns[c][r]`) and the translation.
+    pub const fn from_parts(columns: [[N; 3]; 3], translation: [N; 3]) -> Self {
+        Self { columns, translation }
+    }
+
+    /// The linear part by columns, as [`AffineTransform::from_parts`] takes it.
+    pub fn columns(&self) -> [[N; 3]; 3] {
+        self.columns
+    }
+}
+
 impl<N: Number> AffineTransform<N> {
     pub fn from_matrix(matrix: &Matrix4) -> Self {
         let m = &matrix.rows;

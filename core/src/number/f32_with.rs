@@ -128,6 +128,10 @@ fn unwrap3<S>(v: [F32With<S>; 3]) -> [f32; 3] {
 /// implementation, so the results are `f32`'s bit for bit even where `f32` overrides a default.
 impl<S: SquareRoot> Number for F32With<S> {
     const NAME: &'static str = S::NAME;
+
+    fn write_literal(self, out: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        write!(out, "microtrace::number::F32With::new(f32::from_bits({:#x}))", self.0.to_bits())
+    }
     const SCENE_LIMIT: f64 = <f32 as Number>::SCENE_LIMIT;
     const FLOATING_POINT: bool = <f32 as Number>::FLOATING_POINT;
     const SQRT_ERROR_EXPONENT: i32 = S::SQRT_ERROR_EXPONENT;

@@ -279,6 +279,10 @@ impl Neg for Fixed {
 
 impl Number for Fixed {
     const NAME: &'static str = "fixed";
+
+    fn write_literal(self, out: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        write!(out, "microtrace::number::Fixed::from_bits({})", self.to_bits())
+    }
     const FLOATING_POINT: bool = false;
     const RESOLUTION: Self = Self::from_bits(1);
     const SCENE_LIMIT: f64 = Self::COORDINATE_LIMIT;
@@ -438,6 +442,10 @@ impl Neg for Fixed16 {
 
 impl Number for Fixed16 {
     const NAME: &'static str = "fixed16";
+
+    fn write_literal(self, out: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        write!(out, "microtrace::number::Fixed16::from_bits({})", self.to_bits())
+    }
     const FLOATING_POINT: bool = false;
     const RESOLUTION: Self = Self::from_bits(1);
     const SCENE_LIMIT: f64 = Self::COORDINATE_LIMIT;

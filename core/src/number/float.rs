@@ -26,6 +26,10 @@ macro_rules! float_number {
                 self as f64
             }
 
+            fn write_literal(self, out: &mut dyn core::fmt::Write) -> core::fmt::Result {
+                write!(out, "{}::from_bits({:#x})", stringify!($type), self.to_bits())
+            }
+
             fn from_i32(value: i32) -> Self {
                 value as $type
             }

@@ -135,6 +135,11 @@ pub trait Number:
     /// The `e` with `2^e ≤ |self| < 2^(e+1)`; `None` for zero.
     fn binary_exponent(self) -> Option<i32>;
 
+    /// Writes a constant expression of exactly this value (bit for bit) that a crate using
+    /// `microtrace` compiles: how the firmware's build script puts a scene prepared on the host
+    /// into flash in the number type.
+    fn write_literal(self, out: &mut dyn core::fmt::Write) -> core::fmt::Result;
+
     /// The relative error of [`Number::sqrt`] is below 2^this. Conservative bounds built with
     /// square roots (the shadow table's cones) widen by it; an approximate square root
     /// (`f32-micromath`) overrides it.

@@ -69,6 +69,12 @@ impl SoftFloat {
     /// (3·10³⁰⁰) stay below [`Number::MAX`] (about 9·10³⁰⁷).
     pub const COORDINATE_LIMIT: f64 = 1e150;
 
+    /// The value of [`SoftFloat::mantissa`] and [`SoftFloat::exponent`] as written by
+    /// `write_literal` (the caller keeps them normalised).
+    pub const fn from_parts(mantissa: i32, exponent: i32) -> Self {
+        Self { mantissa, exponent }
+    }
+
     /// The mantissa, magnitude in [2²⁷, 2²⁸) (0 for zero).
     pub const fn mantissa(self) -> i32 {
         self.mantissa
@@ -342,6 +348,10 @@ impl Neg for SoftFloat {
 
 impl Number for SoftFloat {
     const NAME: &'static str = "soft32";
+
+    fn write_literal(self, out: &mut dyn core::fmt::Write) -> core::fmt::Result {
+        write!(out, "microtrace::number::SoftFloat::from_parts({}, {})", self.mantissa, self.exponent)
+    }
     const SCENE_LIMIT: f64 = Self::COORDINATE_LIMIT;
     // Relative precision, and scaling by a power of two (an exponent change) is exact: the
     // fixed-point rescaling would change no result.

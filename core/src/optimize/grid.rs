@@ -130,7 +130,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Grid<N, MAX_OBJECTS> {
             if extent.is_empty() {
                 return;
             }
-            let shape = if cells == CellShape::Polygons { polygon(usize::from(object)) } else { Projected::Whole };
+            let shape = if cells == CellShape::Polygons && super::SILHOUETTES { polygon(usize::from(object)) } else { Projected::Whole };
             let stadium = if cells == CellShape::Octagons { stadium(usize::from(object)) } else { None };
             let (width, height) = (cell_width.get(), cell_height.get());
             for cell_row in extent.first_row / cell_height..=(extent.last_row / cell_height).min(GRID_SIZE - 1) {

@@ -18,14 +18,13 @@ pub mod sortlist;
 use crate::camera::{Camera, PixelPosition};
 use crate::geometry::{AffineTransform, Vector3};
 use crate::number::Number;
-use crate::scene::{ObjectDescription, Optimizations};
+use crate::scene::{ObjectDescription, Optimizations, Primitive};
 
 use bounding_volume::ObjectGeometry;
 use capsule::{Capsule, ScreenMap};
 use extents::Extent;
 use grid::Grid;
 use projection::Screen;
-#[cfg(feature = "acceleration-tables")]
 use shadow::ShadowBound;
 
 /// Whether the larger structures beyond the thesis are compiled in (the `acceleration-tables`
@@ -112,7 +111,35 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
     /// firmware's scene) are never copied through the stack.
     pub fn rebuild(&mut self, camera: &Camera<N>, optimizations: Optimizations, objects: &[ObjectDescription], tuning: Tuning) {
         let count = objects.len().min(MAX_OBJECTS).min(usize::from(u16::MAX));
-        let screen = Screen::new(camera);
+        // The geometry as the tracer will see it: the inverse rounded to N, inverted back.
+        let of = |index: usize| {
+            let geometry = objects.get(index).and_then(rendered_geometry::<N>)?;
+            Some((ObjectBounds::of_geometry(&geometry), Some(geometry)))
+        };
+        self.rebuild_with(camera, optimizations, tuning, count, of);
+    }
+
+    /// [`Acceleration::rebuild`] from each object's bounds prepared ahead in the number type
+    /// (the firmware's, made at build time): no `f64` at all. The same structures as
+    /// `rebuild` for the same bounds, but that objects reaching the eye plane cover the whole
+    /// screen (the eye-plane clip needs the `f64` silhouettes).
+    pub fn rebuild_from_bounds(&mut self, camera: &Camera<N>, optimizations: Optimizations, bounds: &[ObjectBounds<N>]) {
+        let count = bounds.len().min(MAX_OBJECTS).min(usize::from(u16::MAX));
+        self.rebuild_with(camera, optimizations, Tuning::IMPROVED, count, |index| bounds.get(index).map(|b| (*b, None)));
+    }
+
+    /// The common part: `of(index)` gives an object's bounds and, on the host, its f64
+    /// geometry (for the thesis's tuning and the eye-plane clip); `None`: nothing is known (a
+    /// singular transform), the object covers the screen.
+    fn rebuild_with(
+        &mut self,
+        camera: &Camera<N>,
+        optimizations: Optimizations,
+        tuning: Tuning,
+        count: usize,
+        of: impl Fn(usize) -> Option<(ObjectBounds<N>, Option<ObjectGeometry>)>,
+    ) {
+        let screen = if SILHOUETTES { Screen::new(camera) } else { Screen::sized(camera.width(), camera.height()) };
         self.count = count;
         self.optimizations = optimizations;
         self.tuning = tuning;
@@ -125,7 +152,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
         self.stadiums.fill(None);
         #[cfg(feature = "acceleration-tables")]
         self.shadow.fill(ShadowBound::always());
-        let corners = window_corners(&screen, camera);
+        let corners = if SILHOUETTES { window_corners(&screen, camera) } else { [[0.0; 3]; 4] };
         let map = ScreenMap::new(camera);
         // Our tuning: capsules seen from the eye, in the number type (`capsule`); the thesis's:
         // its volumes projected in f64.
@@ -133,13 +160,13 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
         let capsules = tuning.tight_silhouettes || !SILHOUETTES;
         // And each object's capsule for the grid's per-entry depth bounds (28 bytes in f32).
         let mut stored = [Capsule::UNSET; MAX_OBJECTS];
-        for (index, description) in objects.iter().take(count).enumerate() {
-            // The geometry as the tracer will see it: the inverse rounded to N, inverted back.
-            let Some(geometry) = rendered_geometry::<N>(description) else { continue };
-            // The bounding capsule (f64, the object's alone), for the screen and the shadows.
-            let needs_capsule = capsules || (cfg!(feature = "acceleration-tables") && tuning.shadow_culling && optimizations.extents);
-            let (start, end, radius) = if needs_capsule { geometry.bounding_capsule() } else { ([0.0; 3], [0.0; 3], f64::INFINITY) };
-            let capsule = if capsules { Capsule::new(start, end, radius) } else { Capsule::UNSET };
+        let mut shapes = [Primitive::Sphere; MAX_OBJECTS];
+        for index in 0..count {
+            let Some((bounds, geometry)) = of(index) else { continue };
+            if let Some(shape) = shapes.get_mut(index) {
+                *shape = bounds.primitive;
+            }
+            let capsule = if capsules { bounds.capsule } else { Capsule::UNSET };
             if let Some(slot) = stored.get_mut(index) {
                 *slot = capsule;
             }
@@ -147,10 +174,16 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
             // silhouette clipped at the eye plane (`projection`, B16) does better. Only such
             // objects take that path (the thesis scenes have none).
             let reaches_eye = SILHOUETTES && capsules && map.cover(&capsule) == capsule::Covered::Whole && capsule.radius != N::MAX;
+            // The f64 paths need the geometry: without it (bounds prepared ahead), the whole
+            // screen and no depth bound.
+            let silhouette = |tight: bool| match &geometry {
+                Some(geometry) if SILHOUETTES => Extent::of(&screen, &screen.project_object(geometry, tight)),
+                _ => Extent::whole(&screen),
+            };
             // Pixelbuffer fills the extents' octagons (`render::fill_volumes`).
             if optimizations.extents || optimizations.grid || (optimizations.pixelbuffer && capsules) {
                 self.extents[index] = if reaches_eye {
-                    Extent::of(&screen, &screen.project_object(&geometry, true))
+                    silhouette(true)
                 } else if capsules {
                     let (covered, stadium) = map.cover_and_stadium(&capsule);
                     if let Some(slot) = self.stadiums.get_mut(index) {
@@ -158,7 +191,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
                     }
                     Extent::of_cover(&map, &covered)
                 } else {
-                    Extent::of(&screen, &screen.project_object(&geometry, false))
+                    silhouette(false)
                 };
             }
             if optimizations.sortlist {
@@ -166,13 +199,13 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
                     if let Some(bound) = map.depth_bound(&capsule) {
                         self.near[index] = bound;
                     }
-                } else if let Some(bound) = sortlist::depth_bound(&screen, &corners, &geometry) {
+                } else if let Some(bound) = geometry.as_ref().filter(|_| SILHOUETTES).and_then(|geometry| sortlist::depth_bound(&screen, &corners, geometry)) {
                     self.near[index] = N::from_f64(bound);
                 }
             }
             #[cfg(feature = "acceleration-tables")]
             if tuning.shadow_culling && optimizations.extents {
-                self.shadow[index] = ShadowBound::new(start, end, radius);
+                self.shadow[index] = bounds.shadow;
             }
         }
         if optimizations.sortlist {
@@ -186,16 +219,16 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
             return;
         }
         let capsules_of = |index: usize| stored.get(index).copied();
-        let polygon = |index: usize| match objects.get(index).and_then(rendered_geometry::<N>) {
-            Some(geometry) => screen.project_object(&geometry, tuning.tight_silhouettes),
-            None => projection::Projected::Whole,
+        let polygon = |index: usize| match of(index).and_then(|(_, geometry)| geometry) {
+            Some(geometry) if SILHOUETTES => screen.project_object(&geometry, tuning.tight_silhouettes),
+            _ => projection::Projected::Whole,
         };
         let near = &self.near;
         let block_capsule = |object: u16, columns: (u16, u16), rows: (u16, u16)| -> N {
             let index = usize::from(object);
             let global = near.get(index).copied().unwrap_or(-N::MAX);
             // Only cylinders and cones gain: a sphere's or cube's capsule is a ball.
-            let shaped = objects.get(index).is_some_and(|o| matches!(o.primitive, crate::scene::Primitive::Cylinder | crate::scene::Primitive::Cone));
+            let shaped = shapes.get(index).is_some_and(|p| matches!(p, Primitive::Cylinder | Primitive::Cone));
             let block = if shaped { capsules_of(index).and_then(|capsule| map.block_depth_bound(&capsule, columns, rows)) } else { None };
             match block {
                 Some(bound) if bound > global => bound,
@@ -205,21 +238,21 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
         let block_depth = |object: u16, columns: (u16, u16), rows: (u16, u16)| -> N {
             let index = usize::from(object);
             let global = near.get(index).copied().unwrap_or(-N::MAX);
-            let block = objects
-                .get(index)
-                .and_then(rendered_geometry::<N>)
+            let block = of(index)
+                .and_then(|(_, geometry)| geometry)
+                .filter(|_| SILHOUETTES)
                 .and_then(|geometry| sortlist::block_depth_bound(&screen, &geometry, columns, rows));
             match block {
                 Some(bound) if N::from_f64(bound) > global => N::from_f64(bound),
                 _ => global,
             }
         };
-        let depth: Option<&grid::BlockDepth<'_, N>> = match (optimizations.sortlist && tuning.cell_rectangles, capsules) {
+        let depth: Option<&grid::BlockDepth<'_, N>> = match (optimizations.sortlist && tuning.cell_rectangles, capsules || !SILHOUETTES) {
             (false, _) => None,
             (true, false) => Some(&block_depth),
             (true, true) => Some(&block_capsule),
         };
-        let cells = match (tuning.cell_rectangles, capsules) {
+        let cells = match (tuning.cell_rectangles, capsules || !SILHOUETTES) {
             (false, _) => grid::CellShape::Rectangles,
             (true, false) => grid::CellShape::Polygons,
             (true, true) => grid::CellShape::Octagons,
@@ -344,6 +377,29 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
 
     pub fn extent(&self, object: usize) -> Option<Extent> {
         self.extents.get(object).copied()
+    }
+}
+
+/// What the optimizations need of an object that depends on it alone: its primitive, its
+/// bounding capsule for the screen and its shadow capsule, in the number type. Prepared at
+/// preparation on the host, at build time for the firmware (`write_literal`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ObjectBounds<N> {
+    pub primitive: Primitive,
+    pub capsule: Capsule<N>,
+    pub shadow: ShadowBound<N>,
+}
+
+impl<N: Number> ObjectBounds<N> {
+    /// From the geometry the tracer renders (f64).
+    pub fn of_geometry(geometry: &ObjectGeometry) -> Self {
+        let (start, end, radius) = geometry.bounding_capsule();
+        Self { primitive: geometry.primitive, capsule: Capsule::new(start, end, radius), shadow: ShadowBound::new(start, end, radius) }
+    }
+
+    /// For each object of the descriptions (`None` for a singular transform).
+    pub fn of(description: &ObjectDescription) -> Option<Self> {
+        rendered_geometry::<N>(description).map(|geometry| Self::of_geometry(&geometry))
     }
 }
 

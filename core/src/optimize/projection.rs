@@ -72,6 +72,11 @@ impl Screen {
         view: View::Parallel { direction: [0.0; 3] },
     };
 
+    /// Only the size (the firmware, without the `f64-silhouettes` feature: nothing projects).
+    pub const fn sized(width: u16, height: u16) -> Self {
+        Self { width, height, ..Self::UNSET }
+    }
+
     pub fn new<N: Number>(camera: &Camera<N>) -> Self {
         let (width, height) = (camera.width(), camera.height());
         let first = camera.view_plane_point(camera.pixel(0, height - 1)).to_f64();

@@ -1,6 +1,7 @@
 //! Scenes: the description a `.mts` file parses into ([`SceneDescription`], plain `f64`, no
 //! number type yet) and the render-ready [`Scene`] prepared from it in a chosen number type.
 
+pub mod ahead;
 mod description;
 mod prepared;
 mod range;

@@ -1,0 +1,183 @@
+//! A scene prepared ahead: everything that depends on the scene alone (the objects' inverse
+//! transforms and materials, their bounding and shadow capsules, the camera, the light, the
+//! shading constants) made on the host in the number type and written as Rust source
+//! ([`write_prepared_ahead`], the firmware's build script), so that it reaches flash already in
+//! the number type; and the chip's preparation from it ([`Scene::prepare_ahead`]), which does
+//! only what depends on the view and the light, with no `f64` at all.
+
+use core::fmt::{self, Write};
+
+use crate::camera::Camera;
+use crate::geometry::Vector3;
+use crate::number::Number;
+use crate::optimize::ObjectBounds;
+use crate::parser::{SceneError, SceneErrorKind};
+use crate::scene::{Object, Optimizations, PreparedLight, Scene};
+use crate::shading::{Palette, ShadingConstants};
+
+/// The parts of a scene prepared ahead, as the firmware keeps them in flash.
+#[derive(Debug)]
+pub struct PreparedAhead<'a, N> {
+    pub camera: Camera<N>,
+    pub light: PreparedLight<N>,
+    pub constants: ShadingConstants<N>,
+    pub background: u8,
+    pub shadows: bool,
+    pub dither: bool,
+    pub optimizations: Optimizations,
+    pub palette: &'a Palette,
+    /// The objects; their `eye` is filled in by [`Scene::prepare_ahead`] (it depends on the view).
+    pub objects: &'a [Object<N>],
+    pub bounds: &'a [ObjectBounds<N>],
+}
+
+impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
+    /// Prepares the scene in place from parts made ahead: copies them, puts the eye into each
+    /// object's space and builds the acceleration structures from the bounds (per frame: the
+    /// work that depends on the view and the light).
+    pub fn prepare_ahead(&mut self, parts: &PreparedAhead<'_, N>) -> Result<(), SceneError> {
+        self.camera = parts.camera;
+        self.light = parts.light;
+        self.constants = parts.constants;
+        self.background = parts.background;
+        self.shadows = parts.shadows;
+        self.dither = parts.dither;
+        self.optimizations = parts.optimizations;
+        self.palette = *parts.palette;
+        self.objects.clear();
+        let eye = self.camera.eye();
+        for object in parts.objects {
+            let mut object = *object;
+            object.eye = eye.map_or(Vector3::zero(), |eye| object.object_from_world.point(eye));
+            self.objects.push(object).map_err(|_| SceneError { line: 0, kind: SceneErrorKind::TooManyObjects { capacity: MAX_OBJECTS } })?;
+        }
+        self.acceleration.rebuild_from_bounds(&self.camera, self.optimizations, parts.bounds);
+        Ok(())
+    }
+}
+
+/// Writes the Rust source of `scene`'s parts prepared ahead: `OBJECTS_AHEAD`, `BOUNDS_AHEAD`,
+/// `PALETTE_AHEAD` and `AHEAD` (a [`PreparedAhead`]), the number type named `Number` where it
+/// is written (every value bit for bit, by [`Number::write_literal`]).
+pub fn write_prepared_ahead<N: Number, const MAX_OBJECTS: usize>(scene: &Scene<N, MAX_OBJECTS>, bounds: &[ObjectBounds<N>], out: &mut dyn Write) -> fmt::Result {
+    let count = scene.objects.len();
+    writeln!(out, "pub static OBJECTS_AHEAD: [microtrace::scene::Object<Number>; {count}] = [")?;
+    for object in &scene.objects {
+        let columns = object.object_from_world.columns();
+        write!(out, "    microtrace::scene::Object {{ primitive: microtrace::scene::Primitive::{:?}, object_from_world: microtrace::geometry::AffineTransform::from_parts([", object.primitive)?;
+        for column in columns {
+            numbers(out, &column)?;
+            write!(out, ", ")?;
+        }
+        write!(out, "], ")?;
+        numbers(out, &object.object_from_world.translation)?;
+        write!(out, "), eye: ")?;
+        vector(out, Vector3::<N>::zero())?;
+        let m = &object.material;
+        write!(out, ", material: microtrace::scene::PreparedMaterial {{ colour: {}, ka: ", m.colour)?;
+        m.ka.write_literal(out)?;
+        write!(out, ", kd: ")?;
+        m.kd.write_literal(out)?;
+        write!(out, ", ks: ")?;
+        m.ks.write_literal(out)?;
+        write!(out, ", rnd: ")?;
+        m.rnd.write_literal(out)?;
+        write!(out, ", power: {}, reflectance: ", m.power)?;
+        numbers(out, &m.reflectance)?;
+        writeln!(out, " }} }},")?;
+    }
+    writeln!(out, "];")?;
+    writeln!(out, "pub static BOUNDS_AHEAD: [microtrace::optimize::ObjectBounds<Number>; {}] = [", bounds.len())?;
+    for b in bounds {
+        write!(out, "    microtrace::optimize::ObjectBounds {{ primitive: microtrace::scene::Primitive::{:?}, capsule: microtrace::optimize::capsule::Capsule {{ start: ", b.primitive)?;
+        vector(out, b.capsule.start)?;
+        write!(out, ", end: ")?;
+        vector(out, b.capsule.end)?;
+        write!(out, ", radius: ")?;
+        b.capsule.radius.write_literal(out)?;
+        write!(out, " }}, shadow: microtrace::optimize::shadow::ShadowBound {{ centre: ")?;
+        let s = &b.shadow;
+        vector(out, s.centre)?;
+        write!(out, ", axis: ")?;
+        vector(out, s.axis)?;
+        for (name, value) in [("half", s.half), ("radius", s.radius), ("reach", s.reach)] {
+            write!(out, ", {name}: ")?;
+            value.write_literal(out)?;
+        }
+        writeln!(out, " }} }},")?;
+    }
+    writeln!(out, "];")?;
+    write!(out, "pub static PALETTE_AHEAD: microtrace::shading::Palette = microtrace::shading::Palette {{ entries: [")?;
+    for entry in scene.palette.entries.iter() {
+        write!(out, "microtrace::shading::Rgb4 {{ r: {}, g: {}, b: {} }}, ", entry.r, entry.g, entry.b)?;
+    }
+    writeln!(out, "] }};")?;
+    let camera = &scene.camera;
+    let (origin, spacing, view_plane) = camera.sampling();
+    let v = camera.viewport;
+    write!(out, "pub static AHEAD: microtrace::scene::ahead::PreparedAhead<'static, Number> = microtrace::scene::ahead::PreparedAhead {{\n    camera: microtrace::camera::Camera::from_parts(microtrace::scene::Viewport {{ x1: {}, x2: {}, y1: {}, y2: {} }}, ", v.x1, v.x2, v.y1, v.y2)?;
+    numbers(out, &origin)?;
+    write!(out, ", ")?;
+    numbers(out, &spacing)?;
+    write!(out, ", ")?;
+    view_plane.write_literal(out)?;
+    match camera.eye() {
+        Some(eye) => {
+            write!(out, ", Some(")?;
+            vector(out, eye)?;
+            write!(out, "), ")?;
+        }
+        None => write!(out, ", None, ")?,
+    }
+    vector(out, camera.parallel_direction().unwrap_or(Vector3::zero()))?;
+    write!(out, "),\n    light: microtrace::scene::PreparedLight::")?;
+    let (kind, position) = match scene.light {
+        PreparedLight::Point(position) => ("Point", position),
+        PreparedLight::Direction(direction) => ("Direction", direction),
+    };
+    write!(out, "{kind}(")?;
+    vector(out, position)?;
+    write!(out, "),\n    constants: microtrace::shading::ShadingConstants {{")?;
+    let c = &scene.constants;
+    for (name, value) in [
+        ("fifteen", c.fifteen),
+        ("brightest", c.brightest),
+        ("half", c.half),
+        ("noise_step", c.noise_step),
+        ("ambient", c.ambient),
+        ("full_rgb", c.full_rgb),
+        ("brightest_rgb", c.brightest_rgb),
+    ] {
+        write!(out, " {name}: ")?;
+        value.write_literal(out)?;
+        write!(out, ",")?;
+    }
+    let o = scene.optimizations;
+    writeln!(
+        out,
+        " }},\n    background: {},\n    shadows: {},\n    dither: {},\n    optimizations: microtrace::scene::Optimizations {{ pixelbuffer: {}, extents: {}, grid: {}, sortlist: {} }},",
+        scene.background, scene.shadows, scene.dither, o.pixelbuffer, o.extents, o.grid, o.sortlist
+    )?;
+    writeln!(out, "    palette: &PALETTE_AHEAD,\n    objects: &OBJECTS_AHEAD,\n    bounds: &BOUNDS_AHEAD,\n}};")
+}
+
+fn numbers<N: Number>(out: &mut dyn Write, values: &[N]) -> fmt::Result {
+    write!(out, "[")?;
+    for (index, value) in values.iter().enumerate() {
+        if index > 0 {
+            write!(out, ", ")?;
+        }
+        value.write_literal(out)?;
+    }
+    write!(out, "]")
+}
+
+fn vector<N: Number>(out: &mut dyn Write, v: Vector3<N>) -> fmt::Result {
+    write!(out, "microtrace::geometry::Vector3 {{ x: ")?;
+    v.x.write_literal(out)?;
+    write!(out, ", y: ")?;
+    v.y.write_literal(out)?;
+    write!(out, ", z: ")?;
+    v.z.write_literal(out)?;
+    write!(out, " }}")
+}
