@@ -12,9 +12,10 @@ impl Decimal {
     pub fn new(mut value: u64) -> Self {
         let mut digits = [0u8; 20];
         let mut start = digits.len();
-        loop {
+        // From the last digit back; 20 digits hold any u64, so the iterator never runs out.
+        for digit in digits.iter_mut().rev() {
+            *digit = b'0' + (value % 10) as u8;
             start -= 1;
-            digits[start] = b'0' + (value % 10) as u8;
             value /= 10;
             if value == 0 {
                 break;
@@ -24,7 +25,7 @@ impl Decimal {
     }
 
     pub fn as_bytes(&self) -> &[u8] {
-        &self.digits[self.start..]
+        self.digits.get(self.start..).unwrap_or(&[])
     }
 
     pub fn as_str(&self) -> &str {

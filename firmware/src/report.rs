@@ -34,7 +34,7 @@ impl Report {
     }
 
     pub fn as_bytes(&self) -> &[u8] {
-        &self.text[..self.length]
+        self.text.get(..self.length).unwrap_or(&[])
     }
 
     /// Appends `key=value\n`; a line that does not fit is dropped whole (xtask then misses the
@@ -45,7 +45,9 @@ impl Report {
             return;
         }
         for part in [key.as_bytes(), b"=", value, b"\n"] {
-            self.text[self.length..self.length + part.len()].copy_from_slice(part);
+            if let Some(slot) = self.text.get_mut(self.length..self.length + part.len()) {
+                slot.copy_from_slice(part);
+            }
             self.length += part.len();
         }
     }

@@ -94,7 +94,7 @@ fn firmware_matches_host(name: &str, board: Board) {
     assert_eq!(numbers["instructions"], frame);
     assert_eq!(numbers["instructions_per_pixel"], frame / numbers["pixels"]);
     assert_eq!(numbers["frame_instructions_per_pixel"], frame / numbers["pixels"]);
-    no_double_precision(name, board, numbers);
+    linked_code_is_clean(name, board, numbers);
 
     if let Some(oled_png) = &run.oled_png {
         let oled = xtask::oled::read_png(oled_png).unwrap();
@@ -160,15 +160,19 @@ fn firmware_matches_host_in<N: microtrace::number::Number>(name: &str, board: Bo
     assert_eq!(framebuffer, expected, "{name} on {} in {}: the framebuffer differs from the host render", board.name(), N::NAME);
     assert_eq!(run.numbers["ro_tests"], statistics.ro_tests);
     assert_eq!(run.numbers["shadow_tests"], statistics.shadow_tests);
-    no_double_precision(name, board, &run.numbers);
+    linked_code_is_clean(name, board, &run.numbers);
 }
 
-/// No f64 on the target: a thesis-scene build in a number type other than f64 links no
-/// double-precision routine (the ELF audit, `xtask::elf`, which
-/// `the_linked_audit_agrees_with_llvm_nm` checks against llvm-nm): the scene reaches flash
-/// already in the number type (`microtrace::scene::ahead`).
-fn no_double_precision(name: &str, board: Board, numbers: &std::collections::BTreeMap<String, u64>) {
-    assert_eq!(numbers["f64_symbols"], 0, "{name} on {}: the firmware links double-precision routines (see linked-audit.txt)", board.name());
+/// No f64 on the target and no panic path: a thesis-scene build in a number type other than
+/// f64 links no double-precision routine (the scene reaches flash already in the number type,
+/// `microtrace::scene::ahead`), no `core::panicking` symbol and no `core::fmt` code (indices in
+/// range by construction). The ELF audit is `xtask::elf`'s, which
+/// `the_linked_audit_agrees_with_llvm_nm` checks against llvm-nm; the names are in the run's
+/// linked-audit.txt.
+fn linked_code_is_clean(name: &str, board: Board, numbers: &std::collections::BTreeMap<String, u64>) {
+    for key in ["f64_symbols", "panic_symbols", "fmt_symbols"] {
+        assert_eq!(numbers[key], 0, "{name} on {}: {key} (see linked-audit.txt)", board.name());
+    }
 }
 
 #[test]

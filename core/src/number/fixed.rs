@@ -103,7 +103,9 @@ fn mul_q32(a: i64, b: i64) -> i64 {
 #[inline]
 fn divlu(u1: u32, u0: u32, v: u32) -> u32 {
     const B: u32 = 1 << 16;
-    let (vn1, vn0) = (v >> 16, v & 0xFFFF); // vn1 ≥ 2^15
+    // vn1 ≥ 2^15 for the normalised divisor; `max(1)` changes nothing then, and shows the
+    // compiler that the divisions below cannot be by zero (no panic path).
+    let (vn1, vn0) = ((v >> 16).max(1), v & 0xFFFF);
     let (un1, un0) = (u0 >> 16, u0 & 0xFFFF);
     let mut q1 = u1 / vn1;
     let mut rhat = u1 - q1 * vn1;
