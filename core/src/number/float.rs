@@ -44,10 +44,20 @@ macro_rules! float_number {
 
             fn checked_div(self, divisor: Self) -> Option<Self> {
                 if divisor == 0.0 {
-                    None
-                } else {
-                    Some((self / divisor).clamp(<$type>::MIN, <$type>::MAX))
+                    return None;
                 }
+                let quotient = self / divisor;
+                // `clamp(MIN, MAX)` with one comparison for the usual, finite quotient (an FPU
+                // without min/max instructions pays two compare-and-branch pairs for `clamp`).
+                Some(if quotient.abs() <= <$type>::MAX {
+                    quotient
+                } else if quotient > 0.0 {
+                    <$type>::MAX
+                } else if quotient < 0.0 {
+                    <$type>::MIN
+                } else {
+                    quotient
+                })
             }
 
             fn floor_to_i32(self) -> i32 {
