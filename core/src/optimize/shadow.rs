@@ -114,10 +114,10 @@ impl<N: Number> ShadowBound<N> {
 /// widened for its rounding (`margin`): conservative, never exact.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LightFootprint<N> {
-    /// For a point light: the cone of directions from the light that meet the sphere, as (unit
-    /// axis, cosine of the widened half-angle). A shadow ray from P can meet the object only if
-    /// the direction from the light to P lies in the cone. `(zero, −1)`: always inside.
-    pub cone: (Vector3<N>, N),
+    /// For a point light: the directions from the light that meet the capsule, within a
+    /// reach of the chord between the unit directions to its two ends. A shadow ray from P can
+    /// meet the object only if the direction from the light to P is among them.
+    pub chord: DirectionChord<N>,
     /// A ball (and so the box `centre ± radius`) holding every direction of the cone (point
     /// light: |d − axis| ≤ √(2 − 2·cos)), or the sphere's cross-section seen along the light
     /// (directional: the centre projected on the plane through the origin perpendicular to
@@ -135,7 +135,7 @@ impl<N: Number> LightFootprint<N> {
     /// May meet any shadow ray.
     pub fn always() -> Self {
         Self {
-            cone: (Vector3::zero(), -N::ONE),
+            chord: DirectionChord::ALWAYS,
             centre: Vector3::zero(),
             radius: N::MAX,
             near: -N::MAX,
@@ -193,34 +193,57 @@ impl<N: Number> ShadowBound<N> {
             return LightFootprint::always();
         }
         match light {
-            LightPosition::Point(position) => {
+            LightPosition::Point(light) => {
                 // Every length below may be off by the square root's relative error, and the
                 // shadow rays' "unit" directions too: widen by four times that.
                 let slack = |x: N| margin(x) + x.abs().times_power_of_two(N::SQRT_ERROR_EXPONENT + 2);
-                let v = self.centre - position;
-                let distance = v.length();
-                let reach = self.reach + margin(self.reach) + slack(distance);
-                if !(distance > reach) {
+                let ends = [self.centre - self.axis * self.half, self.centre + self.axis * self.half];
+                // The capsule's nearest approach to the light.
+                let segment = ends[1] - ends[0];
+                let squared = segment.dot(segment);
+                let along = if squared > N::ZERO { (light - ends[0]).dot(segment).checked_div(squared).unwrap_or(N::ZERO) } else { N::ZERO };
+                let nearest = (ends[0] + segment * along.max(N::ZERO).min(N::ONE) - light).length();
+                let radius = self.radius + margin(self.radius) + slack(nearest);
+                if !(nearest > radius) {
                     return LightFootprint::always();
                 }
-                let Some(inverse) = N::ONE.checked_div(distance) else { return LightFootprint::always() };
-                let axis = v * inverse;
-                let sine = reach * inverse;
+                let (a, b) = (ends[0] - light, ends[1] - light);
+                let (la, lb) = (a.length(), b.length());
+                let (Some(ia), Some(ib), Some(inverse)) = (N::ONE.checked_div(la), N::ONE.checked_div(lb), N::ONE.checked_div(nearest)) else {
+                    return LightFootprint::always();
+                };
+                let (ua, ub) = (a * ia, b * ib);
+                // Each point's ball subtends at most the angle whose sine is radius/nearest.
+                let sine = radius * inverse;
                 let sine = sine + slack(sine);
-                // Lowered by the rounding of the unit vectors the shadow rays compare with it.
                 let cosine = (N::ONE - sine * sine).sqrt();
                 let cosine = cosine - slack(cosine) - slack(N::ONE);
                 if !(cosine > N::ZERO) {
                     return LightFootprint::always();
                 }
-                let chord = ((N::ONE - cosine) + (N::ONE - cosine)).sqrt();
-                let chord = chord + slack(chord) + slack(N::ONE);
+                let ball = ((N::ONE - cosine) + (N::ONE - cosine)).sqrt();
+                // The directions to the axis run along the arc from ua to ub, at most the
+                // sagitta 1 − √(1 − c²/4) from its chord (c the chord's length).
+                let chord = ub - ua;
+                let chord_squared = chord.dot(chord);
+                let sagitta = N::ONE - (N::ONE - chord_squared.times_power_of_two(-2)).max(N::ZERO).sqrt();
+                let reach = ball + sagitta;
+                let reach = reach + slack(reach) + slack(N::ONE);
+                let inverse_squared = if chord_squared > N::ONE.times_power_of_two(-20) { N::ONE.checked_div(chord_squared).unwrap_or(N::ZERO) } else { N::ZERO };
+                let half_chord = chord_squared.sqrt().times_power_of_two(-1);
                 LightFootprint {
-                    cone: (axis, cosine),
-                    centre: axis,
-                    radius: chord,
-                    near: distance - reach,
-                    far: distance + reach,
+                    chord: DirectionChord {
+                        start: ua,
+                        along: chord,
+                        inverse_squared,
+                        reach_squared: reach * reach,
+                        // A point's cone: the cosine of the widened half-angle, as above.
+                        cosine,
+                    },
+                    centre: ua + chord.times_power_of_two(-1),
+                    radius: half_chord + slack(half_chord) + reach,
+                    near: nearest - radius,
+                    far: la.max(lb) + radius,
                 }
             }
             LightPosition::Direction(direction) => {
@@ -228,7 +251,7 @@ impl<N: Number> ShadowBound<N> {
                 let across = self.centre - direction * height;
                 let reach = self.reach + margin(self.reach) + margin(self.centre.largest_component()) + margin(height);
                 LightFootprint {
-                    cone: (Vector3::zero(), -N::ONE),
+                    chord: DirectionChord::ALWAYS,
                     centre: across,
                     radius: reach,
                     near: -height - reach,
@@ -236,6 +259,46 @@ impl<N: Number> ShadowBound<N> {
                 }
             }
         }
+    }
+}
+
+/// The directions from a point light that may meet an object: those within `reach` of the
+/// chord from `start` to `start + along` (unit directions to the capsule's ends).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DirectionChord<N> {
+    pub start: Vector3<N>,
+    pub along: Vector3<N>,
+    /// 1/|along|², zero for a point.
+    pub inverse_squared: N,
+    /// reach²; `N::MAX`: every direction.
+    pub reach_squared: N,
+    /// For a point (`along` zero): the cosine of the cone's widened half-angle about `start`
+    /// (the cone test, one dot product).
+    pub cosine: N,
+}
+
+impl<N: Number> DirectionChord<N> {
+    pub const ALWAYS: Self = Self {
+        start: Vector3 { x: N::ZERO, y: N::ZERO, z: N::ZERO },
+        along: Vector3 { x: N::ZERO, y: N::ZERO, z: N::ZERO },
+        inverse_squared: N::ZERO,
+        reach_squared: N::MAX,
+        cosine: N::MAX,
+    };
+
+    /// Whether `direction` (from the light) is farther than the reach from the chord. The
+    /// closest point's parameter is rounded, which can only make the distance found larger by
+    /// its square times |along|², far inside the reach's margin.
+    #[inline]
+    pub fn excludes(&self, direction: Vector3<N>) -> bool {
+        if self.inverse_squared == N::ZERO {
+            // |d − u|² = |d|² + 1 − 2·d·u for the unit u: the dot product decides.
+            return self.cosine != N::MAX && direction.dot(self.start) < self.cosine;
+        }
+        let w = direction - self.start;
+        let t = (w.dot(self.along) * self.inverse_squared).max(N::ZERO).min(N::ONE);
+        let gap = w - self.along * t;
+        gap.dot(gap) > self.reach_squared
     }
 }
 

@@ -15,6 +15,7 @@
 use super::Statistics;
 use crate::geometry::{Ray, Vector3};
 use crate::number::Number;
+use crate::optimize::shadow::DirectionChord;
 use crate::scene::Scene;
 #[cfg(test)]
 use crate::scene::PreparedLight;
@@ -72,7 +73,7 @@ pub fn in_shadow_cached<N: Number, const MAX_OBJECTS: usize>(
 #[derive(Clone, Copy, Debug)]
 pub struct ShadowCulling<'a, N> {
     /// For a point light: each object's cone of directions from the light.
-    pub light_cones: &'a [(Vector3<N>, N)],
+    pub light_cones: &'a [DirectionChord<N>],
     /// For each receiving object, the objects among the first 128 that may shadow it (bit i:
     /// object i); objects from 128 on are always candidates.
     pub blockers: &'a [u128],
@@ -108,7 +109,7 @@ pub fn in_shadow_culled<N: Number, const MAX_OBJECTS: usize>(
         if index == shaded_object {
             return false;
         }
-        if cull && light_cones.get(index).is_some_and(|(axis, cosine)| from_light.dot(*axis) < *cosine) {
+        if cull && light_cones.get(index).is_some_and(|chord| chord.excludes(from_light)) {
             return false;
         }
         if cull && !acceleration.may_shadow(index, point, to_light, light_distance) {

@@ -4,9 +4,7 @@ use core::ops::Range;
 
 use super::shadow::{in_shadow_culled, shadow_origin, ShadowCache, ShadowCulling};
 #[cfg(feature = "acceleration-tables")]
-use crate::geometry::Vector3;
-#[cfg(feature = "acceleration-tables")]
-use crate::optimize::shadow::{blocker_table, LightFootprint, LightPosition};
+use crate::optimize::shadow::{blocker_table, DirectionChord, LightFootprint, LightPosition};
 use super::primary::nearest_hit_cached;
 use super::Statistics;
 use crate::camera::PixelPosition;
@@ -276,7 +274,7 @@ fn with_shadow_culling<N: Number, R, const MAX_OBJECTS: usize>(
     scene: &Scene<N, MAX_OBJECTS>,
     body: impl FnOnce(&ShadowCulling<'_, N>) -> R,
 ) -> R {
-    let mut light_cones = [(Vector3::zero(), -N::ONE); MAX_OBJECTS];
+    let mut light_cones = [DirectionChord::ALWAYS; MAX_OBJECTS];
     let mut blockers = [0u128; MAX_OBJECTS];
     let mut count = 0;
     if scene.shadows && scene.acceleration.culls_shadows() {
@@ -294,7 +292,7 @@ fn with_shadow_culling<N: Number, R, const MAX_OBJECTS: usize>(
 fn build_shadow_tables<N: Number, const MAX_OBJECTS: usize>(
     scene: &Scene<N, MAX_OBJECTS>,
     count: usize,
-    light_cones: &mut [(Vector3<N>, N); MAX_OBJECTS],
+    light_cones: &mut [DirectionChord<N>; MAX_OBJECTS],
     blockers: &mut [u128; MAX_OBJECTS],
 ) {
     let light = match scene.light {
@@ -304,7 +302,7 @@ fn build_shadow_tables<N: Number, const MAX_OBJECTS: usize>(
     let footprints: [LightFootprint<N>; MAX_OBJECTS] =
         core::array::from_fn(|index| if index < count { scene.acceleration.light_footprint(index, light) } else { LightFootprint::always() });
     for (cone, footprint) in light_cones.iter_mut().zip(&footprints) {
-        *cone = footprint.cone;
+        *cone = footprint.chord;
     }
     let mut order = [0u16; MAX_OBJECTS];
     blocker_table(footprints.get(..count).unwrap_or(&[]), &mut order, blockers);
