@@ -427,6 +427,73 @@ mod tests {
         }
     }
 
+    /// Distance from `p` to the segment from `a` to `b`, in f64.
+    fn to_segment(p: [f64; 3], a: [f64; 3], b: [f64; 3]) -> f64 {
+        let ab = [0, 1, 2].map(|k| b[k] - a[k]);
+        let ap = [0, 1, 2].map(|k| p[k] - a[k]);
+        let squared: f64 = ab.iter().map(|c| c * c).sum();
+        let t = if squared > 0.0 { (ap.iter().zip(&ab).map(|(x, y)| x * y).sum::<f64>() / squared).clamp(0.0, 1.0) } else { 0.0 };
+        libm::sqrt((0..3).map(|k| (a[k] + t * ab[k] - p[k]).powi(2)).sum::<f64>())
+    }
+
+    /// Rods (capsules) toward a point light: every blocker that a shadow ray from a point of a
+    /// receiver really meets is in the receiver's row, and the ray's direction from the light
+    /// passes the blocker's chord test (`DirectionChord::excludes`).
+    fn rods_keep_every_real_blocker<N: Number>() {
+        let mut random = Random(11);
+        for scene in 0..12 {
+            let rods: [([f64; 3], [f64; 3], f64); 8] = core::array::from_fn(|_| {
+                let start = [random.between(-40.0, 40.0), random.between(-10.0, 10.0), random.between(-40.0, 40.0)];
+                let end = [0, 1, 2].map(|k| start[k] + random.between(-30.0, 30.0));
+                (start, end, random.between(0.5, 4.0))
+            });
+            let bounds = rods.map(|(start, end, radius)| ShadowBound::<N>::new(start, end, radius));
+            let light = [random.between(-60.0, 60.0), random.between(40.0, 90.0), random.between(-60.0, 60.0)];
+            let footprints = bounds.map(|bound| bound.footprint(LightPosition::Point(Vector3::from_f64(light))));
+            let (mut order, mut table) = ([0u16; 8], [0u128; 8]);
+            blocker_table(&footprints, &mut order, &mut table);
+            for receiver in 0..8 {
+                let (start, end, radius) = rods[receiver];
+                for blocker in (0..8).filter(|b| *b != receiver) {
+                    let (b_start, b_end, b_radius) = rods[blocker];
+                    for s in 0..=8 {
+                        let q = [0, 1, 2].map(|k| start[k] + (end[k] - start[k]) * f64::from(s) / 8.0);
+                        for i in 0..12 {
+                            for j in 0..6 {
+                                let (a, b) = (core::f64::consts::TAU * f64::from(i) / 12.0, core::f64::consts::PI * (f64::from(j) + 0.5) / 6.0);
+                                let p = [q[0] + radius * libm::cos(a) * libm::sin(b), q[1] + radius * libm::cos(b), q[2] + radius * libm::sin(a) * libm::sin(b)];
+                                // Does the segment from p to the light meet the blocker? (sampled)
+                                let meets = (0..=200).any(|step| {
+                                    let u = f64::from(step) / 200.0;
+                                    let x = [0, 1, 2].map(|k| p[k] + (light[k] - p[k]) * u);
+                                    to_segment(x, b_start, b_end) <= b_radius
+                                });
+                                if !meets {
+                                    continue;
+                                }
+                                assert!(table[receiver] & (1 << blocker) != 0, "{}: scene {scene}: rod {receiver} shadowed by {blocker}, not in the table", N::NAME);
+                                let v = [0, 1, 2].map(|k| p[k] - light[k]);
+                                let length = libm::sqrt(v.iter().map(|c| c * c).sum::<f64>());
+                                let direction = Vector3::<N>::from_f64(v.map(|c| c / length));
+                                assert!(!footprints[blocker].chord.excludes(direction), "{}: scene {scene}: the chord of {blocker} excludes a ray that meets it", N::NAME);
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn rods_toward_a_point_light_keep_every_real_blocker() {
+        rods_keep_every_real_blocker::<f64>();
+        rods_keep_every_real_blocker::<f32>();
+        #[cfg(feature = "fixed-point")]
+        rods_keep_every_real_blocker::<crate::number::Fixed>();
+        #[cfg(feature = "soft-float")]
+        rods_keep_every_real_blocker::<crate::number::SoftFloat>();
+    }
+
     #[test]
     fn the_blocker_table_is_conservative_and_selective() {
         the_table_keeps_every_real_blocker::<f64>();
