@@ -173,6 +173,10 @@ fn linked_code_is_clean(name: &str, board: Board, numbers: &std::collections::BT
     for key in ["f64_symbols", "panic_symbols", "fmt_symbols"] {
         assert_eq!(numbers[key], 0, "{name} on {}: {key} (see linked-audit.txt)", board.name());
     }
+    // And the stack never reached the end of its region (a 4 KB margin): an overflow would run
+    // into the statics.
+    let (peak, size) = (numbers["stack_peak_bytes"], numbers["stack_size_bytes"]);
+    assert!(peak + 4096 <= size, "{name} on {}: peak stack {peak} of the {size} bytes there are", board.name());
 }
 
 #[test]

@@ -118,15 +118,21 @@ pub struct LightFootprint<N> {
     /// reach of the chord between the unit directions to its two ends. A shadow ray from P can
     /// meet the object only if the direction from the light to P is among them.
     pub chord: DirectionChord<N>,
-    /// A ball (and so the box `centre ± radius`) holding every direction of the cone (point
-    /// light: |d − axis| ≤ √(2 − 2·cos)), or the sphere's cross-section seen along the light
-    /// (directional: the centre projected on the plane through the origin perpendicular to
-    /// the light, ± reach). Two objects whose balls (or boxes) are apart cannot both meet one
-    /// shadow ray.
+    /// What the blocker table compares, pair by pair.
+    pub reach: LightReach<N>,
+}
+
+/// The part of a [`LightFootprint`] that [`blocker_table`] compares.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LightReach<N> {
+    /// A ball (and so the box `centre ± radius`) holding every direction of the chord's reach
+    /// (point light), or the sphere's cross-section seen along the light (directional: the
+    /// centre projected on the plane through the origin perpendicular to the light, ± reach).
+    /// Two objects whose balls (or boxes) are apart cannot both meet one shadow ray.
     pub centre: Vector3<N>,
     pub radius: N,
     /// The range of distances from the light (directional: of depth along the light) over
-    /// the sphere: a blocker whose `near` is beyond a receiver's `far` lies behind it.
+    /// the object: a blocker whose `near` is beyond a receiver's `far` lies behind it.
     pub near: N,
     pub far: N,
 }
@@ -134,13 +140,14 @@ pub struct LightFootprint<N> {
 impl<N: Number> LightFootprint<N> {
     /// May meet any shadow ray.
     pub fn always() -> Self {
-        Self {
-            chord: DirectionChord::ALWAYS,
-            centre: Vector3::zero(),
-            radius: N::MAX,
-            near: -N::MAX,
-            far: N::MAX,
-        }
+        Self { chord: DirectionChord::ALWAYS, reach: LightReach::always() }
+    }
+}
+
+impl<N: Number> LightReach<N> {
+    /// May meet any shadow ray.
+    pub fn always() -> Self {
+        Self { centre: Vector3::zero(), radius: N::MAX, near: -N::MAX, far: N::MAX }
     }
 
     /// Whether some shadow ray from a point of `receiver` toward the light may meet `blocker`:
@@ -231,8 +238,7 @@ impl<N: Number> ShadowBound<N> {
                 let reach = reach + slack(reach) + slack(N::ONE);
                 let inverse_squared = if chord_squared > N::ONE.times_power_of_two(-20) { N::ONE.checked_div(chord_squared).unwrap_or(N::ZERO) } else { N::ZERO };
                 let half_chord = chord_squared.sqrt().times_power_of_two(-1);
-                LightFootprint {
-                    chord: DirectionChord {
+                LightFootprint { chord: DirectionChord {
                         start: ua,
                         along: chord,
                         inverse_squared,
@@ -240,10 +246,12 @@ impl<N: Number> ShadowBound<N> {
                         // A point's cone: the cosine of the widened half-angle, as above.
                         cosine,
                     },
-                    centre: ua + chord.times_power_of_two(-1),
-                    radius: half_chord + slack(half_chord) + reach,
-                    near: nearest - radius,
-                    far: la.max(lb) + radius,
+                    reach: LightReach {
+                        centre: ua + chord.times_power_of_two(-1),
+                        radius: half_chord + slack(half_chord) + reach,
+                        near: nearest - radius,
+                        far: la.max(lb) + radius,
+                    },
                 }
             }
             LightPosition::Direction(direction) => {
@@ -252,10 +260,12 @@ impl<N: Number> ShadowBound<N> {
                 let reach = self.reach + margin(self.reach) + margin(self.centre.largest_component()) + margin(height);
                 LightFootprint {
                     chord: DirectionChord::ALWAYS,
-                    centre: across,
-                    radius: reach,
-                    near: -height - reach,
-                    far: -height + reach,
+                    reach: LightReach {
+                        centre: across,
+                        radius: reach,
+                        near: -height - reach,
+                        far: -height + reach,
+                    },
                 }
             }
         }
@@ -315,7 +325,7 @@ pub enum LightPosition<N> {
 /// (`order` is scratch space, one entry per object): the footprints sorted by their boxes' low
 /// x, each compared only with those whose x range overlaps its own, so the work grows with the
 /// objects and the overlapping pairs, not with all pairs.
-pub fn blocker_table<N: Number>(footprints: &[LightFootprint<N>], order: &mut [u16], blockers: &mut [u128]) {
+pub fn blocker_table<N: Number>(footprints: &[LightReach<N>], order: &mut [u16], blockers: &mut [u128]) {
     let count = footprints.len().min(order.len()).min(blockers.len()).min(usize::from(u16::MAX));
     let (order, blockers) = (&mut order[..count], &mut blockers[..count]);
     blockers.fill(0);
@@ -390,7 +400,7 @@ mod tests {
             let norm = libm::sqrt(toward.iter().map(|c| c * c).sum::<f64>());
             let toward = toward.map(|c| c / norm);
             let light = if scene % 2 == 0 { LightPosition::Point(Vector3::from_f64(point)) } else { LightPosition::Direction(Vector3::from_f64(toward)) };
-            let footprints = bounds.map(|bound| bound.footprint(light));
+            let footprints = bounds.map(|bound| bound.footprint(light).reach);
             let (mut order, mut table) = ([0u16; 12], [0u128; 12]);
             blocker_table(&footprints, &mut order, &mut table);
             for receiver in 0..count {
@@ -451,7 +461,7 @@ mod tests {
             let light = [random.between(-60.0, 60.0), random.between(40.0, 90.0), random.between(-60.0, 60.0)];
             let footprints = bounds.map(|bound| bound.footprint(LightPosition::Point(Vector3::from_f64(light))));
             let (mut order, mut table) = ([0u16; 8], [0u128; 8]);
-            blocker_table(&footprints, &mut order, &mut table);
+            blocker_table(&footprints.map(|footprint| footprint.reach), &mut order, &mut table);
             for receiver in 0..8 {
                 let (start, end, radius) = rods[receiver];
                 for blocker in (0..8).filter(|b| *b != receiver) {

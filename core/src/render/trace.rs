@@ -4,7 +4,7 @@ use core::ops::Range;
 
 use super::shadow::{in_shadow_culled, shadow_origin, ShadowCache, ShadowCulling};
 #[cfg(feature = "acceleration-tables")]
-use crate::optimize::shadow::{blocker_table, DirectionChord, LightFootprint, LightPosition};
+use crate::optimize::shadow::{blocker_table, DirectionChord, LightPosition, LightReach};
 use super::primary::nearest_hit_cached;
 use super::Statistics;
 use crate::camera::PixelPosition;
@@ -299,13 +299,16 @@ fn build_shadow_tables<N: Number, const MAX_OBJECTS: usize>(
         PreparedLight::Point(position) => LightPosition::Point(position),
         PreparedLight::Direction(direction) => LightPosition::Direction(direction),
     };
-    let footprints: [LightFootprint<N>; MAX_OBJECTS] =
-        core::array::from_fn(|index| if index < count { scene.acceleration.light_footprint(index, light) } else { LightFootprint::always() });
-    for (cone, footprint) in light_cones.iter_mut().zip(&footprints) {
+    // Each footprint's chord goes straight to the render's table; only the reaches are kept
+    // for the sweep (6 numbers an object).
+    let mut reaches = [LightReach::always(); MAX_OBJECTS];
+    for (index, (cone, reach)) in light_cones.iter_mut().zip(reaches.iter_mut()).enumerate().take(count) {
+        let footprint = scene.acceleration.light_footprint(index, light);
         *cone = footprint.chord;
+        *reach = footprint.reach;
     }
     let mut order = [0u16; MAX_OBJECTS];
-    blocker_table(footprints.get(..count).unwrap_or(&[]), &mut order, blockers);
+    blocker_table(reaches.get(..count).unwrap_or(&[]), &mut order, blockers);
 }
 
 #[cfg(not(feature = "acceleration-tables"))]
