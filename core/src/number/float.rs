@@ -4,7 +4,7 @@
 use super::Number;
 
 macro_rules! float_number {
-    ($type:ty, $name:literal, $limit:expr, $sqrt:path, $floor:path, $bits:ty, $mantissa:literal, $bias:literal) => {
+    ($type:ty, $name:literal, $limit:expr, $sqrt:path, $bits:ty, $mantissa:literal, $bias:literal) => {
         impl Number for $type {
             const NAME: &'static str = $name;
             const SCENE_LIMIT: f64 = $limit;
@@ -61,8 +61,16 @@ macro_rules! float_number {
             }
 
             fn floor_to_i32(self) -> i32 {
-                // `as` saturates and maps NaN to 0.
-                $floor(self) as i32
+                // ⌊x⌋ without libm's floor (a call, and integer code without an FPU): `as`
+                // truncates, saturates and maps NaN to 0; a negative non-integer then steps
+                // down one. Exact: a truncated value too large for the type's mantissa came
+                // from an integer, which converts back unchanged.
+                let truncated = self as i32;
+                if (truncated as $type) > self {
+                    truncated.saturating_sub(1)
+                } else {
+                    truncated
+                }
             }
 
             fn times_power_of_two(self, exponent: i32) -> Self {
@@ -95,9 +103,9 @@ macro_rules! float_number {
     };
 }
 
-float_number!(f64, "f64", f64::INFINITY, libm::sqrt, libm::floor, u64, 52, 1023);
+float_number!(f64, "f64", f64::INFINITY, libm::sqrt, u64, 52, 1023);
 // Three squares of 10¹⁸ (3·10³⁶) stay below f32::MAX (3.4·10³⁸): no infinities from dot products.
-float_number!(f32, "f32", 1e18, libm::sqrtf, libm::floorf, u32, 23, 127);
+float_number!(f32, "f32", 1e18, libm::sqrtf, u32, 23, 127);
 
 #[cfg(test)]
 mod tests {
@@ -131,5 +139,22 @@ mod tests {
     fn sqrt_of_negative_is_zero() {
         assert_eq!(Number::sqrt(-4.0f64), 0.0);
         assert_eq!(Number::sqrt(4.0f32), 2.0);
+    }
+
+    /// The libm-free floor equals libm's floor saturated to `i32`, on the edges (±0, NaN,
+    /// infinities, ±2³¹ and beyond, halves, values just below integers) and on a sweep.
+    #[test]
+    fn floor_to_i32_is_floor_saturated() {
+        let edges = [0.0, -0.0, 0.5, -0.5, 1.0, -1.0, 2.999_999, -2.999_999, 2_147_483_647.0, 2_147_483_647.5, 2_147_483_648.0, -2_147_483_648.0, -2_147_483_648.5, -2_147_483_649.0, 1e12, -1e12, f64::MAX, f64::MIN, f64::INFINITY, f64::NEG_INFINITY, f64::NAN, f64::from_bits(1), -f64::from_bits(1)];
+        let sweep = (-4000..4000).map(|i| f64::from(i) * 0.37 + 1e-9 * f64::from(i % 7));
+        for x in edges.into_iter().chain(sweep) {
+            assert_eq!(Number::floor_to_i32(x), libm::floor(x) as i32, "f64 {x}");
+            let y = x as f32;
+            assert_eq!(Number::floor_to_i32(y), libm::floorf(y) as i32, "f32 {y}");
+        }
+        for bits in (0..u32::MAX).step_by(9973) {
+            let y = f32::from_bits(bits);
+            assert_eq!(Number::floor_to_i32(y), libm::floorf(y) as i32, "f32 bits {bits:#x}");
+        }
     }
 }

@@ -406,9 +406,11 @@ pub struct Stadium {
 }
 
 /// Sixteenths of a pixel per pixel.
-const SUBPIXELS: i32 = 16;
+const SUBPIXELS: i32 = 1 << SUBPIXEL_BITS;
+const SUBPIXEL_BITS: u32 = 4;
 /// The segment parameter's scale in [`Stadium::block`].
-const T_ONE: i32 = 1024;
+const T_ONE: i32 = 1 << T_BITS;
+const T_BITS: u32 = 10;
 /// Coordinates beyond this many pixels are not converted (sixteenths fit an `i16`).
 const STADIUM_LIMIT: i32 = 2_000;
 
@@ -439,6 +441,25 @@ impl Stadium {
         let high = [i32::from(columns.1) * SUBPIXELS + r, i32::from(rows.1) * SUBPIXELS + r];
         let [p, q] = self.ends.map(|end| end.map(i32::from));
         let d = [q[0] - p[0], q[1] - p[1]];
+        let bounds = [columns, rows];
+        let mut out = [(0u16, 0u16); 2];
+        // The pixels whose sample (16·index) lies in [lo, hi] along axis k, within the block.
+        let pixels = |k: usize, lo: i32, hi: i32| -> Option<(u16, u16)> {
+            let (first, last) = (ceil_shift(lo, SUBPIXEL_BITS), hi >> SUBPIXEL_BITS);
+            let (block_first, block_last) = bounds.get(k).map_or((0, -1), |b| (i32::from(b.0), i32::from(b.1)));
+            let (first, last) = (first.max(block_first), last.min(block_last));
+            (first <= last).then_some((first as u16, last as u16))
+        };
+        if d == [0, 0] {
+            // A disc (a sphere's silhouette): its box, as the segment's path below gives it.
+            for (k, slot) in out.iter_mut().enumerate() {
+                if p[k] < low[k] || p[k] > high[k] {
+                    return None;
+                }
+                *slot = pixels(k, p[k] - r, p[k] + r)?;
+            }
+            return Some((out[0], out[1]));
+        }
         let (mut t0, mut t1) = (0, T_ONE);
         for k in 0..2 {
             let (pk, dk, lk, hk) = (p[k], d[k], low[k], high[k]);
@@ -456,19 +477,9 @@ impl Stadium {
         if t0 > t1 {
             return None;
         }
-        let mut out = [(0u16, 0u16); 2];
-        let bounds = [columns, rows];
         for (k, slot) in out.iter_mut().enumerate() {
             let (u, v) = (p[k] * T_ONE + d[k] * t0, p[k] * T_ONE + d[k] * t1);
-            let (lo, hi) = (divide_floor(u.min(v), T_ONE) - r, divide_ceil(u.max(v), T_ONE) + r);
-            // Pixels whose sample (16·index) lies in [lo, hi].
-            let (first, last) = (divide_ceil(lo, SUBPIXELS), divide_floor(hi, SUBPIXELS));
-            let (block_first, block_last) = (i32::from(bounds[k].0), i32::from(bounds[k].1));
-            let (first, last) = (first.max(block_first), last.min(block_last));
-            if first > last {
-                return None;
-            }
-            *slot = (first as u16, last as u16);
+            *slot = pixels(k, (u.min(v) >> T_BITS) - r, ceil_shift(u.max(v), T_BITS) + r)?;
         }
         Some((out[0], out[1]))
     }
@@ -519,6 +530,11 @@ fn divide_floor(a: i32, b: i32) -> i32 {
     }
 }
 
+/// ⌈a / 2^bits⌉ (an arithmetic shift is ⌊a / 2^bits⌋).
+fn ceil_shift(a: i32, bits: u32) -> i32 {
+    -(a.wrapping_neg() >> bits)
+}
+
 /// ⌈a / b⌉ for b ≠ 0.
 fn divide_ceil(a: i32, b: i32) -> i32 {
     -divide_floor(a.wrapping_neg(), b)
@@ -546,5 +562,57 @@ impl Extent {
             }
             _ => Self::EMPTY,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Stadium;
+
+    /// A small deterministic generator (xorshift), so the test needs no crate.
+    fn next(state: &mut u32) -> u32 {
+        *state ^= *state << 13;
+        *state ^= *state >> 17;
+        *state ^= *state << 5;
+        *state
+    }
+
+    /// Every pixel of a block whose sample lies in the stadium is inside `block`'s rectangle,
+    /// and the rectangle lies in the block: for discs (a sphere's silhouette, the fast path),
+    /// axis-aligned and oblique segments.
+    #[test]
+    fn a_block_holds_every_pixel_of_the_stadium_in_it() {
+        let mut state = 0x2545_f491;
+        let mut coordinate = |state: &mut u32, span: u32| (next(state) % span) as i16 - 160;
+        let (mut nonempty, mut discs) = (0, 0);
+        for case in 0..3000 {
+            let first = [coordinate(&mut state, 1600), coordinate(&mut state, 1000)];
+            let second = match case % 4 {
+                0 => first,
+                1 => [first[0], coordinate(&mut state, 1000)],
+                2 => [coordinate(&mut state, 1600), first[1]],
+                _ => [coordinate(&mut state, 1600), coordinate(&mut state, 1000)],
+            };
+            let stadium = Stadium { ends: [first, second], radius: (next(&mut state) % 200) as i16 + 1 };
+            let c0 = (next(&mut state) % 90) as u16;
+            let r0 = (next(&mut state) % 60) as u16;
+            let columns = (c0, c0 + (next(&mut state) % 12) as u16);
+            let rows = (r0, r0 + (next(&mut state) % 8) as u16);
+            let found = stadium.block(columns, rows);
+            if let Some(((a, b), (c, d))) = found {
+                nonempty += 1;
+                discs += usize::from(first == second);
+                assert!(a <= b && c <= d && a >= columns.0 && b <= columns.1 && c >= rows.0 && d <= rows.1, "{stadium:?} {columns:?} {rows:?} -> {found:?}");
+            }
+            for row in rows.0..=rows.1 {
+                for column in columns.0..=columns.1 {
+                    if stadium.contains(column, row) {
+                        let inside = found.is_some_and(|((a, b), (c, d))| (a..=b).contains(&column) && (c..=d).contains(&row));
+                        assert!(inside, "{stadium:?} {columns:?} {rows:?}: pixel ({column}, {row}) is in the stadium, not in {found:?}");
+                    }
+                }
+            }
+        }
+        assert!(nonempty > 300 && discs > 20, "the cases must reach the stadiums: {nonempty} nonempty, {discs} discs");
     }
 }

@@ -320,15 +320,55 @@ pub enum LightPosition<N> {
     Direction(Vector3<N>),
 }
 
-/// Which objects may shadow which: `blockers[r]` gets bit `b` (for `b` < 128) when a shadow
+/// A set of the object numbers below 128, as four 32-bit words: a word's shift, test and
+/// trailing-zero count are one instruction each on a 32-bit core, a `u128`'s several.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct BlockerSet {
+    words: [u32; 4],
+}
+
+impl BlockerSet {
+    /// Object numbers from this one on are not held: always candidates.
+    pub const CAPACITY: usize = 128;
+
+    pub const EMPTY: Self = Self { words: [0; 4] };
+
+    /// Adds `index` (ignored from [`BlockerSet::CAPACITY`] on).
+    pub fn insert(&mut self, index: usize) {
+        if let Some(word) = self.words.get_mut(index / 32) {
+            *word |= 1 << (index % 32);
+        }
+    }
+
+    pub fn contains(&self, index: usize) -> bool {
+        self.words.get(index / 32).is_some_and(|word| word & (1 << (index % 32)) != 0)
+    }
+
+    /// The members, smallest first.
+    pub fn iter(&self) -> impl Iterator<Item = usize> + '_ {
+        self.words.iter().enumerate().flat_map(|(word_index, word)| {
+            let mut remaining = *word;
+            core::iter::from_fn(move || {
+                if remaining == 0 {
+                    return None;
+                }
+                let index = 32 * word_index + remaining.trailing_zeros() as usize;
+                remaining &= remaining - 1;
+                Some(index)
+            })
+        })
+    }
+}
+
+/// Which objects may shadow which: `blockers[r]` gets `b` (for `b` < 128) when a shadow
 /// ray from object `r` may meet object `b` ([`LightFootprint::may_shadow`]). Sweep and prune
 /// (`order` is scratch space, one entry per object): the footprints sorted by their boxes' low
 /// x, each compared only with those whose x range overlaps its own, so the work grows with the
 /// objects and the overlapping pairs, not with all pairs.
-pub fn blocker_table<N: Number>(footprints: &[LightReach<N>], order: &mut [u16], blockers: &mut [u128]) {
+pub fn blocker_table<N: Number>(footprints: &[LightReach<N>], order: &mut [u16], blockers: &mut [BlockerSet]) {
     let count = footprints.len().min(order.len()).min(blockers.len()).min(usize::from(u16::MAX));
     let (order, blockers) = (&mut order[..count], &mut blockers[..count]);
-    blockers.fill(0);
+    blockers.fill(BlockerSet::EMPTY);
     for (index, place) in order.iter_mut().enumerate() {
         *place = index as u16;
     }
@@ -342,14 +382,14 @@ pub fn blocker_table<N: Number>(footprints: &[LightReach<N>], order: &mut [u16],
                 break;
             }
             let (i, j) = (usize::from(first), usize::from(second));
-            if j < 128 && b.may_shadow(a) {
-                if let Some(bits) = blockers.get_mut(i) {
-                    *bits |= 1u128 << j;
+            if j < BlockerSet::CAPACITY && b.may_shadow(a) {
+                if let Some(set) = blockers.get_mut(i) {
+                    set.insert(j);
                 }
             }
-            if i < 128 && a.may_shadow(b) {
-                if let Some(bits) = blockers.get_mut(j) {
-                    *bits |= 1u128 << i;
+            if i < BlockerSet::CAPACITY && a.may_shadow(b) {
+                if let Some(set) = blockers.get_mut(j) {
+                    set.insert(i);
                 }
             }
         }
@@ -401,13 +441,13 @@ mod tests {
             let toward = toward.map(|c| c / norm);
             let light = if scene % 2 == 0 { LightPosition::Point(Vector3::from_f64(point)) } else { LightPosition::Direction(Vector3::from_f64(toward)) };
             let footprints = bounds.map(|bound| bound.footprint(light).reach);
-            let (mut order, mut table) = ([0u16; 12], [0u128; 12]);
+            let (mut order, mut table) = ([0u16; 12], [BlockerSet::EMPTY; 12]);
             blocker_table(&footprints, &mut order, &mut table);
             for receiver in 0..count {
                 let (centre, radius) = spheres[receiver];
                 for blocker in (0..count).filter(|b| *b != receiver) {
                     pairs += 1;
-                    let bit = table[receiver] & (1 << blocker) != 0;
+                    let bit = table[receiver].contains(blocker);
                     listed += u32::from(bit);
                     // Sample the receiver's surface.
                     for i in 0..24 {
@@ -460,7 +500,7 @@ mod tests {
             let bounds = rods.map(|(start, end, radius)| ShadowBound::<N>::new(start, end, radius));
             let light = [random.between(-60.0, 60.0), random.between(40.0, 90.0), random.between(-60.0, 60.0)];
             let footprints = bounds.map(|bound| bound.footprint(LightPosition::Point(Vector3::from_f64(light))));
-            let (mut order, mut table) = ([0u16; 8], [0u128; 8]);
+            let (mut order, mut table) = ([0u16; 8], [BlockerSet::EMPTY; 8]);
             blocker_table(&footprints.map(|footprint| footprint.reach), &mut order, &mut table);
             for receiver in 0..8 {
                 let (start, end, radius) = rods[receiver];
@@ -481,7 +521,7 @@ mod tests {
                                 if !meets {
                                     continue;
                                 }
-                                assert!(table[receiver] & (1 << blocker) != 0, "{}: scene {scene}: rod {receiver} shadowed by {blocker}, not in the table", N::NAME);
+                                assert!(table[receiver].contains(blocker), "{}: scene {scene}: rod {receiver} shadowed by {blocker}, not in the table", N::NAME);
                                 let v = [0, 1, 2].map(|k| p[k] - light[k]);
                                 let length = libm::sqrt(v.iter().map(|c| c * c).sum::<f64>());
                                 let direction = Vector3::<N>::from_f64(v.map(|c| c / length));

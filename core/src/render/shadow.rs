@@ -15,7 +15,7 @@
 use super::Statistics;
 use crate::geometry::{Ray, Vector3};
 use crate::number::Number;
-use crate::optimize::shadow::DirectionChord;
+use crate::optimize::shadow::{BlockerSet, DirectionChord};
 use crate::scene::Scene;
 #[cfg(test)]
 use crate::scene::PreparedLight;
@@ -74,9 +74,9 @@ pub fn in_shadow_cached<N: Number, const MAX_OBJECTS: usize>(
 pub struct ShadowCulling<'a, N> {
     /// For a point light: each object's cone of directions from the light.
     pub light_cones: &'a [DirectionChord<N>],
-    /// For each receiving object, the objects among the first 128 that may shadow it (bit i:
-    /// object i); objects from 128 on are always candidates.
-    pub blockers: &'a [u128],
+    /// For each receiving object, the objects among the first 128 that may shadow it; objects
+    /// from 128 on are always candidates.
+    pub blockers: &'a [BlockerSet],
 }
 
 impl<N> Default for ShadowCulling<'_, N> {
@@ -99,62 +99,63 @@ pub fn in_shadow_culled<N: Number, const MAX_OBJECTS: usize>(
     culling: &ShadowCulling<'_, N>,
 ) -> bool {
     statistics.shadow_rays += 1;
-    let light_cones = culling.light_cones;
+    let segment = ShadowSegment { ray: Ray { origin: point, direction: to_light }, interval: Interval::below(light_distance) };
+    if !scene.acceleration.culls_shadows() {
+        // The thesis's loop: every other object, in order.
+        return (0..scene.objects.len()).any(|index| index != shaded_object && segment.meets(scene, index, statistics));
+    }
     let from_light = -to_light;
-    let ray = Ray { origin: point, direction: to_light };
-    let interval = Interval::below(light_distance);
-    let acceleration = &scene.acceleration;
-    let cull = acceleration.culls_shadows();
+    let cones = culling.light_cones;
+    // The chord test is a few multiplications and rejects almost every candidate: inline.
+    // The capsule test and the primitive's are out of line.
     let blocks = |index: usize, statistics: &mut Statistics| -> bool {
-        if index == shaded_object {
-            return false;
-        }
-        if cull && light_cones.get(index).is_some_and(|chord| chord.excludes(from_light)) {
-            return false;
-        }
-        if cull && !acceleration.may_shadow(index, point, to_light, light_distance) {
-            return false;
-        }
-        let Some(object) = scene.objects.get(index) else { return false };
-        statistics.shadow_tests += 1;
-        object.primitive.occluded(&object.object_from_world.ray(&ray), interval)
+        index != shaded_object
+            && !cones.get(index).is_some_and(|chord| chord.excludes(from_light))
+            && segment.may_meet_and_meets(scene, index, statistics)
     };
-    let bits = if cull { culling.blockers.get(shaded_object).copied() } else { None };
-    let listed = |index: usize| bits.is_none_or(|bits| index >= 128 || bits & (1u128 << index) != 0);
-    let first = if cull { cache.last_blocker.map(usize::from).filter(|index| listed(*index)) } else { None };
+    let set = culling.blockers.get(shaded_object).copied();
+    let listed = |index: usize| set.is_none_or(|set| index >= BlockerSet::CAPACITY || set.contains(index));
+    let first = cache.last_blocker.map(usize::from).filter(|index| listed(*index));
     if let Some(index) = first {
         if blocks(index, statistics) {
             return true;
         }
     }
-    // The listed objects, 32 bits at a time (a 128-bit shift or count is several
-    // instructions on a 32-bit core; a word's is one).
-    let listed_bits = bits.unwrap_or(0);
-    for word in 0..4 {
-        let mut remaining = (listed_bits >> (32 * word)) as u32;
-        while remaining != 0 {
-            let index = 32 * word + remaining.trailing_zeros() as usize;
-            remaining &= remaining - 1;
-            if Some(index) == first {
-                continue;
-            }
-            if blocks(index, statistics) {
-                cache.last_blocker = Some(index as u16);
-                return true;
-            }
-        }
-    }
-    let start = if bits.is_some() { 128 } else { 0 };
-    for index in start..scene.objects.len() {
-        if Some(index) == first {
-            continue;
-        }
-        if blocks(index, statistics) {
+    let mut found = |index: usize, statistics: &mut Statistics| -> bool {
+        if Some(index) != first && blocks(index, statistics) {
             cache.last_blocker = Some(index as u16);
             return true;
         }
+        false
+    };
+    if let Some(set) = set {
+        if set.iter().any(|index| found(index, statistics)) {
+            return true;
+        }
     }
-    false
+    let start = if set.is_some() { BlockerSet::CAPACITY } else { 0 };
+    (start..scene.objects.len()).any(|index| found(index, statistics))
+}
+
+/// A shadow ray's segment: from the (offset) hit point toward the light, up to its distance.
+struct ShadowSegment<N> {
+    ray: Ray<N>,
+    interval: Interval<N>,
+}
+
+impl<N: Number> ShadowSegment<N> {
+    /// Whether the object's capsule lets the segment through, else whether its primitive does.
+    #[inline(never)]
+    fn may_meet_and_meets<const MAX_OBJECTS: usize>(&self, scene: &Scene<N, MAX_OBJECTS>, index: usize, statistics: &mut Statistics) -> bool {
+        scene.acceleration.may_shadow(index, self.ray.origin, self.ray.direction, self.interval.max) && self.meets(scene, index, statistics)
+    }
+
+    /// The shadow test proper (`occluded` in the object's space), counted.
+    fn meets<const MAX_OBJECTS: usize>(&self, scene: &Scene<N, MAX_OBJECTS>, index: usize, statistics: &mut Statistics) -> bool {
+        let Some(object) = scene.objects.get(index) else { return false };
+        statistics.shadow_tests += 1;
+        object.primitive.occluded(&object.object_from_world.ray(&self.ray), self.interval)
+    }
 }
 
 #[cfg(test)]

@@ -4,7 +4,7 @@ use core::ops::Range;
 
 use super::shadow::{in_shadow_culled, shadow_origin, ShadowCache, ShadowCulling};
 #[cfg(feature = "acceleration-tables")]
-use crate::optimize::shadow::{blocker_table, DirectionChord, LightPosition, LightReach};
+use crate::optimize::shadow::{blocker_table, BlockerSet, DirectionChord, LightPosition, LightReach};
 use super::primary::nearest_hit_cached;
 use super::Statistics;
 use crate::camera::PixelPosition;
@@ -275,7 +275,7 @@ fn with_shadow_culling<N: Number, R, const MAX_OBJECTS: usize>(
     body: impl FnOnce(&ShadowCulling<'_, N>) -> R,
 ) -> R {
     let mut light_cones = [DirectionChord::ALWAYS; MAX_OBJECTS];
-    let mut blockers = [0u128; MAX_OBJECTS];
+    let mut blockers = [BlockerSet::EMPTY; MAX_OBJECTS];
     let mut count = 0;
     if scene.shadows && scene.acceleration.culls_shadows() {
         count = scene.objects.len().min(MAX_OBJECTS);
@@ -293,7 +293,7 @@ fn build_shadow_tables<N: Number, const MAX_OBJECTS: usize>(
     scene: &Scene<N, MAX_OBJECTS>,
     count: usize,
     light_cones: &mut [DirectionChord<N>; MAX_OBJECTS],
-    blockers: &mut [u128; MAX_OBJECTS],
+    blockers: &mut [BlockerSet; MAX_OBJECTS],
 ) {
     let light = match scene.light {
         PreparedLight::Point(position) => LightPosition::Point(position),
