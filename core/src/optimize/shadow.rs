@@ -238,6 +238,11 @@ impl<N: Number> ShadowBound<N> {
                 let reach = reach + slack(reach) + slack(N::ONE);
                 let inverse_squared = if chord_squared > N::ONE.times_power_of_two(-20) { N::ONE.checked_div(chord_squared).unwrap_or(N::ZERO) } else { N::ZERO };
                 let half_chord = chord_squared.sqrt().times_power_of_two(-1);
+                // Every direction within the reach of the chord lies in its ends' box widened
+                // by the reach (and the box's own rounding).
+                let widen = reach + slack(reach);
+                let low = Vector3::new(ua.x.min(ub.x), ua.y.min(ub.y), ua.z.min(ub.z));
+                let high = Vector3::new(ua.x.max(ub.x), ua.y.max(ub.y), ua.z.max(ub.z));
                 LightFootprint { chord: DirectionChord {
                         start: ua,
                         along: chord,
@@ -245,6 +250,8 @@ impl<N: Number> ShadowBound<N> {
                         reach_squared: reach * reach,
                         // A point's cone: the cosine of the widened half-angle, as above.
                         cosine,
+                        low: low - Vector3::new(widen, widen, widen),
+                        high: high + Vector3::new(widen, widen, widen),
                     },
                     reach: LightReach {
                         centre: ua + chord.times_power_of_two(-1),
@@ -285,6 +292,10 @@ pub struct DirectionChord<N> {
     /// For a point (`along` zero): the cosine of the cone's widened half-angle about `start`
     /// (the cone test, one dot product).
     pub cosine: N,
+    /// For a chord: the box of the directions within the reach of it (a direction outside is
+    /// excluded by a comparison or two, before the distance to the chord is computed).
+    pub low: Vector3<N>,
+    pub high: Vector3<N>,
 }
 
 impl<N: Number> DirectionChord<N> {
@@ -294,16 +305,23 @@ impl<N: Number> DirectionChord<N> {
         inverse_squared: N::ZERO,
         reach_squared: N::MAX,
         cosine: N::MAX,
+        // Not consulted: a point's cone test decides, and excludes nothing here.
+        low: Vector3 { x: N::ZERO, y: N::ZERO, z: N::ZERO },
+        high: Vector3 { x: N::ZERO, y: N::ZERO, z: N::ZERO },
     };
 
     /// Whether `direction` (from the light) is farther than the reach from the chord. The
     /// closest point's parameter is rounded, which can only make the distance found larger by
     /// its square times |along|², far inside the reach's margin.
-    #[inline]
+    #[inline(always)]
     pub fn excludes(&self, direction: Vector3<N>) -> bool {
         if self.inverse_squared == N::ZERO {
             // |d − u|² = |d|² + 1 − 2·d·u for the unit u: the dot product decides.
             return self.cosine != N::MAX && direction.dot(self.start) < self.cosine;
+        }
+        let outside = |d: N, low: N, high: N| d < low || d > high;
+        if outside(direction.x, self.low.x, self.high.x) || outside(direction.y, self.low.y, self.high.y) || outside(direction.z, self.low.z, self.high.z) {
+            return true;
         }
         let w = direction - self.start;
         let t = (w.dot(self.along) * self.inverse_squared).max(N::ZERO).min(N::ONE);
@@ -344,10 +362,15 @@ impl BlockerSet {
         self.words.get(index / 32).is_some_and(|word| word & (1 << (index % 32)) != 0)
     }
 
+    /// The four words: bit `i` of word `w` holds object `32·w + i`.
+    pub fn words(self) -> [u32; 4] {
+        self.words
+    }
+
     /// The members, smallest first.
-    pub fn iter(&self) -> impl Iterator<Item = usize> + '_ {
-        self.words.iter().enumerate().flat_map(|(word_index, word)| {
-            let mut remaining = *word;
+    pub fn iter(self) -> impl Iterator<Item = usize> {
+        self.words.into_iter().enumerate().flat_map(|(word_index, word)| {
+            let mut remaining = word;
             core::iter::from_fn(move || {
                 if remaining == 0 {
                     return None;

@@ -106,35 +106,51 @@ pub fn in_shadow_culled<N: Number, const MAX_OBJECTS: usize>(
     }
     let from_light = -to_light;
     let cones = culling.light_cones;
-    // The chord test is a few multiplications and rejects almost every candidate: inline.
-    // The capsule test and the primitive's are out of line.
-    let blocks = |index: usize, statistics: &mut Statistics| -> bool {
-        index != shaded_object
-            && !cones.get(index).is_some_and(|chord| chord.excludes(from_light))
-            && segment.may_meet_and_meets(scene, index, statistics)
-    };
+    // The chord test is a few multiplications and rejects almost every candidate: forced
+    // inline at each of the three sites below. The capsule test and the primitive's are out
+    // of line.
+    #[inline(always)]
+    fn blocks<N: Number, const MAX_OBJECTS: usize>(
+        scene: &Scene<N, MAX_OBJECTS>,
+        segment: &ShadowSegment<N>,
+        cones: &[DirectionChord<N>],
+        from_light: Vector3<N>,
+        index: usize,
+        statistics: &mut Statistics,
+    ) -> bool {
+        !cones.get(index).is_some_and(|chord| chord.excludes(from_light)) && segment.may_meet_and_meets(scene, index, statistics)
+    }
     let set = culling.blockers.get(shaded_object).copied();
     let listed = |index: usize| set.is_none_or(|set| index >= BlockerSet::CAPACITY || set.contains(index));
-    let first = cache.last_blocker.map(usize::from).filter(|index| listed(*index));
+    // The last blocker first (never the shaded object: it cannot block its own ray).
+    let first = cache.last_blocker.map(usize::from).filter(|index| *index != shaded_object && listed(*index));
     if let Some(index) = first {
-        if blocks(index, statistics) {
+        if blocks(scene, &segment, cones, from_light, index, statistics) {
             return true;
         }
     }
-    let mut found = |index: usize, statistics: &mut Statistics| -> bool {
-        if Some(index) != first && blocks(index, statistics) {
-            cache.last_blocker = Some(index as u16);
-            return true;
-        }
-        false
-    };
+    let skip = |index: usize| index == shaded_object || Some(index) == first;
     if let Some(set) = set {
-        if set.iter().any(|index| found(index, statistics)) {
-            return true;
+        for (word_index, word) in set.words().into_iter().enumerate() {
+            let mut remaining = word;
+            while remaining != 0 {
+                let index = 32 * word_index + remaining.trailing_zeros() as usize;
+                remaining &= remaining - 1;
+                if !skip(index) && blocks(scene, &segment, cones, from_light, index, statistics) {
+                    cache.last_blocker = Some(index as u16);
+                    return true;
+                }
+            }
         }
     }
     let start = if set.is_some() { BlockerSet::CAPACITY } else { 0 };
-    (start..scene.objects.len()).any(|index| found(index, statistics))
+    for index in start..scene.objects.len() {
+        if !skip(index) && blocks(scene, &segment, cones, from_light, index, statistics) {
+            cache.last_blocker = Some(index as u16);
+            return true;
+        }
+    }
+    false
 }
 
 /// A shadow ray's segment: from the (offset) hit point toward the light, up to its distance.
