@@ -64,6 +64,12 @@ impl<D: DrawTarget<Color = Gray4> + FlushRows> PixelSink<u8> for FramebufferAndD
         }
     }
 
+    /// Pixelbuffer's marks stay in the framebuffer: every one is overwritten before its row
+    /// is done, so the display is sent only the picture.
+    fn mark_row(&mut self, x: u16, y: u16, width: u16, value: u8) {
+        self.framebuffer.fill_row(x, y, width, value);
+    }
+
     fn row_done(&mut self, _y: u16) {
         if let Some(display) = &mut self.display {
             display.target.flush();

@@ -65,6 +65,12 @@ impl<P: Copy> PixelSink<P> for BandSink<'_, P> {
             self.band.fill_row(x, row, width, value)
         }
     }
+
+    fn mark_row(&mut self, x: u16, y: u16, width: u16, value: P) {
+        if let Some(row) = self.band_row(y) {
+            self.band.mark_row(x, row, width, value)
+        }
+    }
 }
 
 impl<P: Copy> PixelSource<P> for BandSink<'_, P> {

@@ -84,6 +84,10 @@ impl<P: Copy, S: PixelSink<P>> PixelSink<P> for Progress<'_, S> {
         self.inner.fill_row(x, y, width, value)
     }
 
+    fn mark_row(&mut self, x: u16, y: u16, width: u16, value: P) {
+        self.inner.mark_row(x, y, width, value)
+    }
+
     fn row_done(&mut self, y: u16) {
         self.inner.row_done(y);
         self.report.row_done();

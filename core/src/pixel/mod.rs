@@ -40,6 +40,14 @@ pub trait PixelSink<P: Copy> {
         }
     }
 
+    /// Pixelbuffer's marks (§4.7.2): `width` pixels of row `y` from column `x` set to `value`
+    /// before the render, read back by it (through [`PixelSource`]) and overwritten before the
+    /// row is done. A sink that also shows its pixels (a display) need not show these; by
+    /// default they are stored as [`PixelSink::fill_row`] stores them.
+    fn mark_row(&mut self, x: u16, y: u16, width: u16, value: P) {
+        self.fill_row(x, y, width, value);
+    }
+
     /// Called after each finished row; a display can flush here, a host can report progress.
     fn row_done(&mut self, _y: u16) {}
 }
@@ -68,6 +76,9 @@ impl<P: Copy, S: PixelSink<P> + ?Sized> PixelSink<P> for &mut S {
     }
     fn fill_row(&mut self, x: u16, y: u16, width: u16, value: P) {
         (**self).fill_row(x, y, width, value)
+    }
+    fn mark_row(&mut self, x: u16, y: u16, width: u16, value: P) {
+        (**self).mark_row(x, y, width, value)
     }
     fn row_done(&mut self, y: u16) {
         (**self).row_done(y)

@@ -70,8 +70,21 @@ pub fn nearest_hit_cached<N: Number, const MAX_OBJECTS: usize>(
             }
         }
     }
-    // Tests one candidate; false ends the loop (Sortlist's exit).
-    let mut test = |index: usize, nearest: &mut Option<NearestHit<N>>| -> bool {
+    // Tests one candidate; false ends the loop (Sortlist's exit). Forced inline at both
+    // sites: a call per candidate cost more than the extent checks it makes.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    fn test<N: Number, const MAX_OBJECTS: usize>(
+        scene: &Scene<N, MAX_OBJECTS>,
+        ray: &Ray<N>,
+        pixel: PixelPosition,
+        from_eye: bool,
+        cached: Option<usize>,
+        statistics: &mut Statistics,
+        index: usize,
+        nearest: &mut Option<NearestHit<N>>,
+    ) -> bool {
+        let acceleration = &scene.acceleration;
         if Some(index) == cached {
             return true;
         }
@@ -95,7 +108,7 @@ pub fn nearest_hit_cached<N: Number, const MAX_OBJECTS: usize>(
             *nearest = Some(NearestHit { object: index, t: hit.t, local_normal: hit.normal });
         }
         true
-    };
+    }
     if let Some((entries, depths, dx, dy)) = acceleration.grid_cell(pixel) {
         let sorts = acceleration.sorts();
         for (position, entry) in entries.iter().enumerate() {
@@ -111,13 +124,13 @@ pub fn nearest_hit_cached<N: Number, const MAX_OBJECTS: usize>(
                     }
                 }
             }
-            if !test(usize::from(entry[0]), &mut nearest) {
+            if !test(scene, ray, pixel, from_eye, cached, statistics, usize::from(entry[0]), &mut nearest) {
                 break;
             }
         }
     } else {
         for &index in acceleration.order() {
-            if !test(usize::from(index), &mut nearest) {
+            if !test(scene, ray, pixel, from_eye, cached, statistics, usize::from(index), &mut nearest) {
                 break;
             }
         }

@@ -211,7 +211,7 @@ where
         return;
     }
     for row in rows.clone() {
-        sink.fill_row(0, row, width, flood);
+        sink.mark_row(0, row, width, flood);
     }
     let acceleration = &scene.acceleration;
     if acceleration.tuning().tight_silhouettes || !crate::optimize::SILHOUETTES {
@@ -230,7 +230,7 @@ where
                     },
                     None => span,
                 };
-                sink.fill_row(span.0, row, span.1 - span.0 + 1, fill);
+                sink.mark_row(span.0, row, span.1 - span.0 + 1, fill);
             }
         }
         return;
@@ -247,7 +247,7 @@ where
             Projected::Whole => {
                 // No projection (the eye in or at the volume, or rays along the view plane): all.
                 for row in rows.clone() {
-                    sink.fill_row(0, row, width, fill);
+                    sink.mark_row(0, row, width, fill);
                 }
                 continue;
             }
@@ -258,7 +258,7 @@ where
         }
         for row in extent.first_row.max(rows.start)..=extent.last_row.min(rows.end - 1) {
             if let Some((first, last)) = hull_span(&points, row, width) {
-                sink.fill_row(first, row, last - first + 1, fill);
+                sink.mark_row(first, row, last - first + 1, fill);
             }
         }
     }

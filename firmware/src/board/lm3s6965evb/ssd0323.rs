@@ -6,7 +6,8 @@
 use core::convert::Infallible;
 
 use embedded_graphics::pixelcolor::{Gray4, GrayColor};
-use embedded_graphics::prelude::{DrawTarget, OriginDimensions, Size};
+use embedded_graphics::prelude::{Dimensions, DrawTarget, OriginDimensions, Size};
+use embedded_graphics::primitives::Rectangle;
 use embedded_graphics::Pixel;
 
 use super::spi::OledSpi;
@@ -88,6 +89,27 @@ impl OriginDimensions for Ssd0323 {
 impl DrawTarget for Ssd0323 {
     type Color = Gray4;
     type Error = Infallible;
+
+    /// A rectangle's rows byte by byte: two pixels a byte, and a lone nibble at either end.
+    fn fill_solid(&mut self, area: &Rectangle, colour: Gray4) -> Result<(), Self::Error> {
+        let area = area.intersection(&self.bounding_box());
+        let Some(bottom_right) = area.bottom_right() else { return Ok(()) };
+        let level = colour.luma() & 0x0F;
+        let (first, last) = (area.top_left.x as usize, bottom_right.x as usize);
+        for y in area.top_left.y as usize..=bottom_right.y as usize {
+            let Some(row) = self.screen.get_mut(y) else { continue };
+            for (index, byte) in row.iter_mut().enumerate().take(last / 2 + 1).skip(first / 2) {
+                let (left, right) = (2 * index >= first, 2 * index + 1 <= last);
+                *byte = match (left, right) {
+                    (true, true) => level << 4 | level,
+                    (true, false) => (*byte & 0x0F) | (level << 4),
+                    _ => (*byte & 0xF0) | level,
+                };
+            }
+            self.dirty_rows |= 1u64 << y;
+        }
+        Ok(())
+    }
 
     fn draw_iter<I>(&mut self, pixels: I) -> Result<(), Self::Error>
     where
