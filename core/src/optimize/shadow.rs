@@ -241,8 +241,8 @@ impl<N: Number> ShadowBound<N> {
                 // Every direction within the reach of the chord lies in its ends' box widened
                 // by the reach (and the box's own rounding).
                 let widen = reach + slack(reach);
-                let low = Vector3::new(ua.x.min(ub.x), ua.y.min(ub.y), ua.z.min(ub.z));
-                let high = Vector3::new(ua.x.max(ub.x), ua.y.max(ub.y), ua.z.max(ub.z));
+                let low = Vector3::new(ua.x.min(ub.x), ua.y.min(ub.y), ua.z.min(ub.z)) - Vector3::new(widen, widen, widen);
+                let high = Vector3::new(ua.x.max(ub.x), ua.y.max(ub.y), ua.z.max(ub.z)) + Vector3::new(widen, widen, widen);
                 LightFootprint { chord: DirectionChord {
                         start: ua,
                         along: chord,
@@ -250,8 +250,8 @@ impl<N: Number> ShadowBound<N> {
                         reach_squared: reach * reach,
                         // A point's cone: the cosine of the widened half-angle, as above.
                         cosine,
-                        low: low - Vector3::new(widen, widen, widen),
-                        high: high + Vector3::new(widen, widen, widen),
+                        low: QuantizedDirection::floor(low).0,
+                        high: QuantizedDirection::ceil(high).0,
                     },
                     reach: LightReach {
                         centre: ua + chord.times_power_of_two(-1),
@@ -292,10 +292,36 @@ pub struct DirectionChord<N> {
     /// For a point (`along` zero): the cosine of the cone's widened half-angle about `start`
     /// (the cone test, one dot product).
     pub cosine: N,
-    /// For a chord: the box of the directions within the reach of it (a direction outside is
-    /// excluded by a comparison or two, before the distance to the chord is computed).
-    pub low: Vector3<N>,
-    pub high: Vector3<N>,
+    /// The box of the directions within the reach of the chord, in [`QuantizedDirection`]'s
+    /// steps (rounded outward): a direction outside is excluded by an integer comparison or
+    /// two ([`DirectionChord::outside_box`]), before any arithmetic in the number type.
+    pub low: [i16; 3],
+    pub high: [i16; 3],
+}
+
+/// A direction's components in steps of 2⁻¹⁴, each rounded down ([`QuantizedDirection::floor`])
+/// or up ([`QuantizedDirection::ceil`]) and saturated to `i16`: a unit vector's fit with room.
+/// A shadow ray's direction is converted once, and compared with every candidate's box in
+/// integers (a comparison in a software number type costs tens of instructions).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct QuantizedDirection(pub [i16; 3]);
+
+/// log₂ of the steps per unit of [`QuantizedDirection`].
+const QUANTIZED_EXPONENT: i32 = 14;
+
+impl QuantizedDirection {
+    /// Each component's floor. If ⌊d·2¹⁴⌋ < ⌊low·2¹⁴⌋ then d < low; saturation only moves a
+    /// bound beyond every unit direction.
+    pub fn floor<N: Number>(v: Vector3<N>) -> Self {
+        let step = |x: N| x.times_power_of_two(QUANTIZED_EXPONENT).floor_to_i32().clamp(i32::from(i16::MIN), i32::from(i16::MAX)) as i16;
+        Self([step(v.x), step(v.y), step(v.z)])
+    }
+
+    /// Each component's ceiling: if ⌊d·2¹⁴⌋ > ⌈high·2¹⁴⌉ then d > high.
+    pub fn ceil<N: Number>(v: Vector3<N>) -> Self {
+        let Self(floors) = Self::floor(-v);
+        Self(floors.map(|floor| floor.saturating_neg()))
+    }
 }
 
 impl<N: Number> DirectionChord<N> {
@@ -305,10 +331,17 @@ impl<N: Number> DirectionChord<N> {
         inverse_squared: N::ZERO,
         reach_squared: N::MAX,
         cosine: N::MAX,
-        // Not consulted: a point's cone test decides, and excludes nothing here.
-        low: Vector3 { x: N::ZERO, y: N::ZERO, z: N::ZERO },
-        high: Vector3 { x: N::ZERO, y: N::ZERO, z: N::ZERO },
+        low: [i16::MIN; 3],
+        high: [i16::MAX; 3],
     };
+
+    /// Whether the direction (from the light, [`QuantizedDirection::floor`]ed) lies outside
+    /// the box of the directions the chord may meet: then [`DirectionChord::excludes`] it too.
+    #[inline(always)]
+    pub fn outside_box(&self, direction: QuantizedDirection) -> bool {
+        let QuantizedDirection(d) = direction;
+        d[0] < self.low[0] || d[0] > self.high[0] || d[1] < self.low[1] || d[1] > self.high[1] || d[2] < self.low[2] || d[2] > self.high[2]
+    }
 
     /// Whether `direction` (from the light) is farther than the reach from the chord. The
     /// closest point's parameter is rounded, which can only make the distance found larger by
@@ -318,10 +351,6 @@ impl<N: Number> DirectionChord<N> {
         if self.inverse_squared == N::ZERO {
             // |d − u|² = |d|² + 1 − 2·d·u for the unit u: the dot product decides.
             return self.cosine != N::MAX && direction.dot(self.start) < self.cosine;
-        }
-        let outside = |d: N, low: N, high: N| d < low || d > high;
-        if outside(direction.x, self.low.x, self.high.x) || outside(direction.y, self.low.y, self.high.y) || outside(direction.z, self.low.z, self.high.z) {
-            return true;
         }
         let w = direction - self.start;
         let t = (w.dot(self.along) * self.inverse_squared).max(N::ZERO).min(N::ONE);
@@ -488,6 +517,10 @@ mod tests {
                             let (other, other_radius) = spheres[blocker];
                             if segment_meets_sphere(p, d, length, other, other_radius) {
                                 assert!(bit, "{}: scene {scene}: receiver {receiver} is shadowed by {blocker}, not in the table", N::NAME);
+                                // A point's cone, and its box, keep the ray's direction.
+                                let chord = bounds[blocker].footprint(light).chord;
+                                let from_light = Vector3::<N>::from_f64(d.map(|c| -c));
+                                assert!(!chord.excludes(from_light) && !chord.outside_box(QuantizedDirection::floor(from_light)), "{}: scene {scene}: the cone of {blocker} excludes a ray that meets it", N::NAME);
                             }
                         }
                     }
@@ -511,7 +544,8 @@ mod tests {
 
     /// Rods (capsules) toward a point light: every blocker that a shadow ray from a point of a
     /// receiver really meets is in the receiver's row, and the ray's direction from the light
-    /// passes the blocker's chord test (`DirectionChord::excludes`).
+    /// passes the blocker's chord test (`DirectionChord::excludes`) and lies in its box
+    /// (`DirectionChord::outside_box`).
     fn rods_keep_every_real_blocker<N: Number>() {
         let mut random = Random(11);
         for scene in 0..12 {
@@ -549,6 +583,8 @@ mod tests {
                                 let length = libm::sqrt(v.iter().map(|c| c * c).sum::<f64>());
                                 let direction = Vector3::<N>::from_f64(v.map(|c| c / length));
                                 assert!(!footprints[blocker].chord.excludes(direction), "{}: scene {scene}: the chord of {blocker} excludes a ray that meets it", N::NAME);
+                                let quantized = QuantizedDirection::floor(direction);
+                                assert!(!footprints[blocker].chord.outside_box(quantized), "{}: scene {scene}: the box of {blocker}'s chord excludes a ray that meets it", N::NAME);
                             }
                         }
                     }

@@ -15,7 +15,7 @@
 use super::Statistics;
 use crate::geometry::{Ray, Vector3};
 use crate::number::Number;
-use crate::optimize::shadow::{BlockerSet, DirectionChord};
+use crate::optimize::shadow::{BlockerSet, DirectionChord, QuantizedDirection};
 use crate::scene::Scene;
 #[cfg(test)]
 use crate::scene::PreparedLight;
@@ -106,6 +106,10 @@ pub fn in_shadow_culled<N: Number, const MAX_OBJECTS: usize>(
     }
     let from_light = -to_light;
     let cones = culling.light_cones;
+    // Converted once for the candidates' boxes (only a point light has chords). Converting
+    // at the first candidate that needs it measured slower: the state kept the candidate
+    // test out of line.
+    let quantized = if cones.is_empty() { QuantizedDirection::default() } else { QuantizedDirection::floor(from_light) };
     // The chord test is a few multiplications and rejects almost every candidate: forced
     // inline at each of the three sites below. The capsule test and the primitive's are out
     // of line.
@@ -114,18 +118,19 @@ pub fn in_shadow_culled<N: Number, const MAX_OBJECTS: usize>(
         scene: &Scene<N, MAX_OBJECTS>,
         segment: &ShadowSegment<N>,
         cones: &[DirectionChord<N>],
-        from_light: Vector3<N>,
+        (from_light, quantized): (Vector3<N>, QuantizedDirection),
         index: usize,
         statistics: &mut Statistics,
     ) -> bool {
-        !cones.get(index).is_some_and(|chord| chord.excludes(from_light)) && segment.may_meet_and_meets(scene, index, statistics)
+        // The box (integer comparisons) rejects most directions before any arithmetic in N.
+        !cones.get(index).is_some_and(|chord| chord.outside_box(quantized) || chord.excludes(from_light)) && segment.may_meet_and_meets(scene, index, statistics)
     }
     let set = culling.blockers.get(shaded_object).copied();
     let listed = |index: usize| set.is_none_or(|set| index >= BlockerSet::CAPACITY || set.contains(index));
     // The last blocker first (never the shaded object: it cannot block its own ray).
     let first = cache.last_blocker.map(usize::from).filter(|index| *index != shaded_object && listed(*index));
     if let Some(index) = first {
-        if blocks(scene, &segment, cones, from_light, index, statistics) {
+        if blocks(scene, &segment, cones, (from_light, quantized), index, statistics) {
             return true;
         }
     }
@@ -136,7 +141,7 @@ pub fn in_shadow_culled<N: Number, const MAX_OBJECTS: usize>(
             while remaining != 0 {
                 let index = 32 * word_index + remaining.trailing_zeros() as usize;
                 remaining &= remaining - 1;
-                if !skip(index) && blocks(scene, &segment, cones, from_light, index, statistics) {
+                if !skip(index) && blocks(scene, &segment, cones, (from_light, quantized), index, statistics) {
                     cache.last_blocker = Some(index as u16);
                     return true;
                 }
@@ -145,7 +150,7 @@ pub fn in_shadow_culled<N: Number, const MAX_OBJECTS: usize>(
     }
     let start = if set.is_some() { BlockerSet::CAPACITY } else { 0 };
     for index in start..scene.objects.len() {
-        if !skip(index) && blocks(scene, &segment, cones, from_light, index, statistics) {
+        if !skip(index) && blocks(scene, &segment, cones, (from_light, quantized), index, statistics) {
             cache.last_blocker = Some(index as u16);
             return true;
         }
