@@ -154,16 +154,26 @@ impl<N: Number> LightReach<N> {
     /// their boxes and their balls overlap and the blocker is not wholly behind the receiver.
     #[inline]
     pub fn may_shadow(&self, receiver: &Self) -> bool {
-        if !(self.near <= receiver.far && self.overlaps(receiver)) {
-            return false;
-        }
-        if self.radius == N::MAX || receiver.radius == N::MAX {
+        self.near <= receiver.far && self.meets(receiver)
+    }
+
+    /// The part of [`LightReach::may_shadow`] that is the same both ways: the boxes and the
+    /// balls overlap.
+    #[inline]
+    fn meets(&self, other: &Self) -> bool {
+        self.overlaps(other) && self.balls_meet(other)
+    }
+
+    /// |Δ| ≤ r₁ + r₂ (`length3` never overflows in narrow fixed point; its rounding is far
+    /// inside the radii's margins). The same bits either way round: Δ's components only change
+    /// sign.
+    #[inline]
+    fn balls_meet(&self, other: &Self) -> bool {
+        if self.radius == N::MAX || other.radius == N::MAX {
             return true;
         }
-        // |Δ| ≤ r₁ + r₂ (`length3` never overflows in narrow fixed point; its rounding is far
-        // inside the radii's margins).
-        let apart = (self.centre - receiver.centre).length();
-        apart - apart.abs().times_power_of_two(N::SQRT_ERROR_EXPONENT) <= self.radius + receiver.radius
+        let apart = (self.centre - other.centre).length();
+        apart - apart.abs().times_power_of_two(N::SQRT_ERROR_EXPONENT) <= self.radius + other.radius
     }
 
     #[inline]
@@ -434,12 +444,17 @@ pub fn blocker_table<N: Number>(footprints: &[LightReach<N>], order: &mut [u16],
                 break;
             }
             let (i, j) = (usize::from(first), usize::from(second));
-            if j < BlockerSet::CAPACITY && b.may_shadow(a) {
+            // `b.may_shadow(a)` and `a.may_shadow(b)`, their common part once.
+            let (b_shadows_a, a_shadows_b) = (j < BlockerSet::CAPACITY && b.near <= a.far, i < BlockerSet::CAPACITY && a.near <= b.far);
+            if !(b_shadows_a || a_shadows_b) || !a.meets(b) {
+                continue;
+            }
+            if b_shadows_a {
                 if let Some(set) = blockers.get_mut(i) {
                     set.insert(j);
                 }
             }
-            if i < BlockerSet::CAPACITY && a.may_shadow(b) {
+            if a_shadows_b {
                 if let Some(set) = blockers.get_mut(j) {
                     set.insert(i);
                 }
