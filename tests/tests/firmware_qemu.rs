@@ -189,13 +189,6 @@ fn snooker_in_soft32_on_mps2_an386_matches_the_host() {
     firmware_matches_host_in::<microtrace::number::SoftFloat>("snooker.mts", Board::Mps2An386);
 }
 
-/// The real-board example (Raspberry Pi Pico + SSD1306) keeps compiling against the core.
-#[test]
-fn the_pico_example_builds() {
-    let elf = xtask::example::build().unwrap_or_else(|error| panic!("{error}"));
-    assert!(elf.is_file(), "{} was not built", elf.display());
-}
-
 /// The firmware models only the primitives its features enable: building a scene of spheres
 /// without the `sphere` feature fails in build.rs, saying so.
 #[test]
