@@ -1,9 +1,9 @@
-//! The real-board examples (firmware/examples/: Raspberry Pi Pico + SSD1306, Raspberry Pi Pico
-//! + ST7789) build into complete images for the RP2040: boot2 at the flash's start, the vector
+//! The real-board examples (firmware/examples/: a Raspberry Pi Pico with an SSD1306, and one
+//! with an ST7789) build into complete images for the RP2040: boot2 at the flash's start, the vector
 //! table after it at 0x1000_0100 with its stack pointer in RAM and its reset vector in `.text`
 //! (and the ELF's entry there too), kilobytes of `.text`, the render's functions linked, and
 //! flash and RAM within the chip (2 MB flash, 264 KB RAM). An image linked without cortex-m-rt's
-//! `link.x` (the Pico example's state before: `.boot2` alone) fails every one of these.
+//! `link.x` (the Pico example's state before: `.boot2` alone) fails these checks.
 //!
 //! No RP2040 emulation here: the images are checked, not run.
 
