@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs what MicroTrace's builds and tests need, when it is missing: the Cortex-M rust
 # targets and llvm-tools (firmware), QEMU (firmware tests), SDL2 (the simulator window),
-# Xvfb (the window test without a display). Safe to run again; does nothing when all is there.
+# Xvfb (the window test without a display), flip-link (the real-board examples). Safe to run again; does nothing when all is there.
 set -euo pipefail
 
 need_rustup=()
@@ -16,6 +16,13 @@ fi
 if ! rustup component list --installed 2>/dev/null | grep -q '^llvm-tools'; then
   echo "setup: adding the llvm-tools component" >&2
   rustup component add llvm-tools >&2
+fi
+
+# flip-link: the real-board examples' linker (firmware/examples/*/.cargo/config.toml); a small
+# crate, a few seconds to build.
+if ! command -v flip-link >/dev/null; then
+  echo "setup: cargo install flip-link" >&2
+  cargo install --locked --quiet flip-link >&2
 fi
 
 need_apt=()

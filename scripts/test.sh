@@ -9,5 +9,18 @@ bash scripts/setup.sh
 echo "== the core builds for a Cortex-M3 with no allocator" >&2
 cargo build --quiet -p microtrace --target thumbv7m-none-eabi
 
+echo "== clippy, warnings denied (the host workspace, all targets; the core as the firmware builds it)" >&2
+cargo clippy --quiet --workspace --all-targets -- -D warnings
+cargo clippy --quiet -p microtrace --no-default-features --features embedded-graphics,sphere -- -D warnings
+
+echo "== clippy on the real-board examples (thumbv6m-none-eabi, their own workspaces)" >&2
+for example in firmware/examples/pico-ssd1306 firmware/examples/pico-st7789; do
+  (cd "$example" && cargo clippy --quiet --release -- -D warnings)
+done
+
+echo "== the core packages as a crate (cargo package builds the packaged copy)" >&2
+# --allow-dirty: a developer's work tree may have uncommitted changes; CI's clone has none.
+cargo package --quiet -p microtrace --allow-dirty
+
 echo "== all tests" >&2
 cargo test --workspace

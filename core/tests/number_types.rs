@@ -4,6 +4,9 @@
 //!
 //! Run with `--nocapture` to see the tables.
 
+// A test: Cargo.toml's denial of unwrap/expect/panic is for the core's own code.
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+
 use microtrace::number::Number;
 #[cfg(feature = "micromath")]
 use microtrace::number::F32Micro;

@@ -1,7 +1,8 @@
 //! Project tasks, as a library so that the integration tests can drive them too:
 //! - [`firmware::run`]: build the firmware for a scene, run it under QEMU, collect
 //!   `framebuffer.bin`, `oled.png` and `report.json` (`cargo xtask firmware`);
-//! - [`example::build`]: build the real-board example (`cargo xtask firmware-example`);
+//! - [`example::build`]: build a real-board example (`cargo xtask firmware-example`), and
+//!   [`example::check_image`], what the tests check in its ELF;
 //! - [`report::run`]: every thesis scene, number type and board, into README.md's table and
 //!   `docs/firmware-report.json` (`cargo xtask firmware-report`).
 

@@ -15,7 +15,8 @@ fn usage() -> &'static str {
       leaves framebuffer.bin, oled.png (lm3s6965evb) and report.json in DIR
       (default firmware/target/run/BOARD-SCENE-NUMBER).
   cargo xtask firmware-example
-      Builds (does not run) the real-board example in firmware/examples/.
+      Builds (does not run) the real-board examples in firmware/examples/
+      (Raspberry Pi Pico + SSD1306, Raspberry Pi Pico + ST7789).
   cargo xtask firmware-report [--scene snooker|lattice] [--board B] [--number N] [--opt scene|none]
                               [--primitives scene|all]
       Runs both thesis scenes at 128x64 in every number type on both boards (and all-primitives
@@ -31,7 +32,11 @@ fn main() {
         Some("firmware-report") => {
             report_filter(&arguments[1..]).and_then(|filter| xtask::report::run(&filter)).map(|runs| println!("{} runs", runs.len()))
         }
-        Some("firmware-example") => xtask::example::build().map(|path| println!("built {}", path.display())),
+        Some("firmware-example") => xtask::example::build_all().map(|paths| {
+            for path in paths {
+                println!("built {}", path.display());
+            }
+        }),
         _ => Err(usage().to_owned()),
     };
     if let Err(message) = result {

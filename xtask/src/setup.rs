@@ -55,6 +55,25 @@ pub fn ensure_rust_target(target: &str) -> Result<(), String> {
     Ok(())
 }
 
+/// `cargo install --locked PROGRAM` when `PROGRAM` is not on the PATH (the real-board examples'
+/// linker, flip-link: a small crate, a few seconds to build).
+pub fn ensure_cargo_install(program: &str) -> Result<(), String> {
+    if on_path(program) {
+        return Ok(());
+    }
+    eprintln!("xtask: cargo install --locked {program}");
+    let status = Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
+        .args(["install", "--locked", "--quiet", program])
+        .env_remove("CARGO_TARGET_DIR")
+        .stdin(Stdio::null())
+        .status()
+        .map_err(|error| format!("cannot run cargo: {error}"))?;
+    if !status.success() {
+        return Err(format!("`cargo install --locked {program}` failed"));
+    }
+    Ok(())
+}
+
 /// `apt-get install` as root (CI is root), or through sudo otherwise.
 fn apt_install(packages: &[&str]) -> Result<(), String> {
     eprintln!("xtask: installing {}", packages.join(" "));

@@ -550,6 +550,7 @@ impl Extent {
             }
             Covered::Invisible => return Self::EMPTY,
         };
+        #[allow(clippy::unnecessary_lazy_evaluations, reason = "left as written while the optimizations are being reworked elsewhere")]
         let clip = |(low, high): (i32, i32), count: i32| -> Option<(u16, u16)> {
             let (first, last) = (low.max(0), high.min(count - 1));
             (first <= last).then(|| (first as u16, last as u16))

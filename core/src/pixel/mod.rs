@@ -10,12 +10,28 @@
 mod frame_buffer;
 mod mock;
 #[cfg(feature = "embedded-graphics")]
+mod colour_map;
+#[cfg(feature = "embedded-graphics")]
 mod draw_target;
+#[cfg(feature = "embedded-graphics")]
+mod grey;
+#[cfg(feature = "embedded-graphics")]
+mod ordered_dither;
+#[cfg(feature = "embedded-graphics")]
+mod row_display;
 
 pub use frame_buffer::FrameBuffer;
 pub use mock::MockSink;
 #[cfg(feature = "embedded-graphics")]
+pub use colour_map::{lut_colour, ColourMap, LutColour};
+#[cfg(feature = "embedded-graphics")]
 pub use draw_target::{DrawTargetSink, GreyDrawTargetSink};
+#[cfg(feature = "embedded-graphics")]
+pub use grey::{grey_level, LutGrey};
+#[cfg(feature = "embedded-graphics")]
+pub use ordered_dither::{dither_colour, dither_lights, OrderedDither};
+#[cfg(feature = "embedded-graphics")]
+pub use row_display::RowDisplaySink;
 
 /// An RGB-mode pixel: 8 bits per channel.
 pub type Rgb888 = [u8; 3];

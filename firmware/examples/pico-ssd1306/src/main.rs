@@ -1,37 +1,43 @@
 //! MicroTrace on a real board: a Raspberry Pi Pico (RP2040, Cortex-M0+, no FPU) with an
 //! SSD1306 128x64 monochrome OLED on I2C0 (GP4 = SDA, GP5 = SCL, address 0x3C). It parses the
 //! thesis's snooker scene on the device, fits it to the display, renders it in `f32` and shows
-//! each band of rows as it finishes, the 16 grey levels ordered-dithered to black and white.
-//! Build-only in this repository (`cargo xtask firmware-example`); see README.md for wiring.
+//! each finished band of 8 rows (one SSD1306 page), the palette's 16 grey levels (the OLED's
+//! grey mapping) ordered-dithered to black and white by the core's adapters. See README.md.
 #![no_std]
 #![no_main]
 
-use embedded_graphics::pixelcolor::{BinaryColor, Gray4, GrayColor};
-use embedded_graphics::prelude::*;
-use embedded_graphics::primitives::Rectangle;
+use defmt_rtt as _;
 use fugit::RateExtU32;
-use microtrace::pixel::{FrameBuffer, GreyDrawTargetSink, PixelSink, PixelSource};
+use microtrace::pixel::{FrameBuffer, LutGrey, OrderedDither, PixelSink, PixelSource, RowDisplaySink};
 use microtrace::render::{render_pga, Statistics};
 use microtrace::scene::{Scene, SceneDescription};
-use panic_halt as _;
+use panic_probe as _;
 use rp_pico::entry;
-use rp_pico::hal::{self, pac};
+use rp_pico::hal::{self, pac, Clock};
 use ssd1306::mode::DisplayConfig;
 use ssd1306::prelude::{DisplayRotation, DisplaySize128x64};
 use ssd1306::{I2CDisplayInterface, Ssd1306};
 
 /// The scene, parsed on the device with the same parser as the host.
 const SCENE_TEXT: &[u8] = include_bytes!("../../../../scenes/snooker.mts");
-/// Snooker has 21 balls.
+/// Snooker has 21 balls and a table.
 const MAX_OBJECTS: usize = 24;
 const WIDTH: u16 = 128;
 const HEIGHT: u16 = 64;
 
+/// Stops here with a message on the defmt log (no panic machinery for expected failures).
+fn halt(message: &str) -> ! {
+    defmt::error!("{=str}", message);
+    loop {
+        cortex_m::asm::wfi();
+    }
+}
+
 #[entry]
 fn main() -> ! {
-    let mut pac = pac::Peripherals::take().unwrap();
+    let Some(mut pac) = pac::Peripherals::take() else { halt("peripherals already taken") };
     let mut watchdog = hal::Watchdog::new(pac.WATCHDOG);
-    let clocks = hal::clocks::init_clocks_and_plls(
+    let Ok(clocks) = hal::clocks::init_clocks_and_plls(
         rp_pico::XOSC_CRYSTAL_FREQ,
         pac.XOSC,
         pac.CLOCKS,
@@ -39,9 +45,10 @@ fn main() -> ! {
         pac.PLL_USB,
         &mut pac.RESETS,
         &mut watchdog,
-    )
-    .ok()
-    .unwrap();
+    ) else {
+        halt("the clocks did not start")
+    };
+    defmt::info!("system clock {=u32} Hz", clocks.system_clock.freq().to_Hz());
     let sio = hal::Sio::new(pac.SIO);
     let pins = rp_pico::Pins::new(pac.IO_BANK0, pac.PADS_BANK0, sio.gpio_bank0, &mut pac.RESETS);
     let sda: hal::gpio::Pin<_, hal::gpio::FunctionI2C, hal::gpio::PullUp> = pins.gpio4.reconfigure();
@@ -50,77 +57,81 @@ fn main() -> ! {
 
     let mut display = Ssd1306::new(I2CDisplayInterface::new(i2c), DisplaySize128x64, DisplayRotation::Rotate0)
         .into_buffered_graphics_mode();
-    display.init().unwrap();
+    if display.init().is_err() {
+        halt("the SSD1306 does not answer at 0x3C (wiring?)");
+    }
 
-    let mut description: SceneDescription<MAX_OBJECTS> = microtrace::parser::parse(SCENE_TEXT).unwrap();
-    description.fit_to_size(WIDTH, HEIGHT);
-    let scene = Scene::<f32, MAX_OBJECTS>::prepare(&description).unwrap();
-
-    let pixels = cortex_m::singleton!(: [u8; WIDTH as usize * HEIGHT as usize] = [0; WIDTH as usize * HEIGHT as usize]).unwrap();
-    let mut sink = FramebufferAndOled {
-        framebuffer: FrameBuffer::new(pixels, WIDTH, HEIGHT).unwrap(),
-        oled: GreyDrawTargetSink { target: OrderedDither(display), palette: &scene.palette, offset: Point::zero() },
+    let description: SceneDescription<MAX_OBJECTS> = match microtrace::parser::parse(SCENE_TEXT) {
+        Ok(mut description) => {
+            description.fit_to_size(WIDTH, HEIGHT);
+            description
+        }
+        Err(_) => halt("the scene does not parse"),
     };
+    let Ok(scene) = Scene::<f32, MAX_OBJECTS>::prepare(&description) else { halt("the scene does not prepare") };
+
+    let Some(pixels) = cortex_m::singleton!(: [u8; WIDTH as usize * HEIGHT as usize] = [0; WIDTH as usize * HEIGHT as usize]) else {
+        halt("framebuffer already taken")
+    };
+    let Some(frame) = FrameBuffer::new(pixels, WIDTH, HEIGHT) else { halt("framebuffer too small") };
+    let mut sink = Pages(RowDisplaySink::new(frame, OrderedDither(display), LutGrey::new(&scene.palette)));
     let mut statistics = Statistics::default();
-    render_pga(&scene, &mut sink, &mut statistics);
-    sink.oled.target.0.flush().unwrap();
+    defmt::info!("rendering {=u16}x{=u16}", WIDTH, HEIGHT);
+    // The RP2040's 1 MHz timer times the render (what README.md's estimate is checked against).
+    let timer = hal::Timer::new(pac.TIMER, &mut pac.RESETS, &clocks);
+    let started = timer.get_counter();
+    render(&scene, &mut sink, &mut statistics);
+    let elapsed = timer.get_counter() - started;
+    defmt::info!("rendered in {=u64} ms", elapsed.to_millis());
+    defmt::info!("rays {=u64}, failed rows {=u16}", statistics.rays_traced, sink.0.failed_rows);
     loop {
         cortex_m::asm::wfi();
     }
 }
 
-/// Shows 16 grey levels on a black-and-white display with a 4x4 Bayer matrix.
-struct OrderedDither<D>(D);
-
-const BAYER: [[u8; 4]; 4] = [[0, 8, 2, 10], [12, 4, 14, 6], [3, 11, 1, 9], [15, 7, 13, 5]];
-
-impl<D: Dimensions> Dimensions for OrderedDither<D> {
-    fn bounding_box(&self) -> Rectangle {
-        self.0.bounding_box()
-    }
-}
-
-impl<D: DrawTarget<Color = BinaryColor>> DrawTarget for OrderedDither<D> {
-    type Color = Gray4;
-    type Error = D::Error;
-
-    fn draw_iter<I: IntoIterator<Item = Pixel<Gray4>>>(&mut self, pixels: I) -> Result<(), D::Error> {
-        self.0.draw_iter(pixels.into_iter().map(|Pixel(point, grey)| {
-            let threshold = BAYER[(point.y & 3) as usize][(point.x & 3) as usize];
-            Pixel(point, if grey.luma() > threshold { BinaryColor::On } else { BinaryColor::Off })
-        }))
-    }
-}
-
-/// The render's sink: the framebuffer (read back by the Pixelbuffer optimization) and the
-/// OLED, sent every 8 rows (one SSD1306 page).
-struct FramebufferAndOled<'a, D> {
-    framebuffer: FrameBuffer<'a, u8>,
-    oled: GreyDrawTargetSink<'a, OrderedDither<D>>,
+/// The render, out of line (one symbol for the tests to find in the ELF).
+#[inline(never)]
+fn render<S: PixelSink<u8> + PixelSource<u8>>(scene: &Scene<f32, MAX_OBJECTS>, sink: &mut S, statistics: &mut Statistics) {
+    render_pga(scene, sink, statistics);
 }
 
 type Oled<DI> = Ssd1306<DI, DisplaySize128x64, ssd1306::mode::BufferedGraphicsMode<DisplaySize128x64>>;
+type OledSink<'a, DI> = RowDisplaySink<'a, OrderedDither<Oled<DI>>, LutGrey<'a>>;
 
-impl<DI: ssd1306::prelude::WriteOnlyDataCommand> PixelSink<u8> for FramebufferAndOled<'_, Oled<DI>> {
+/// The core's row sink, plus sending the SSD1306's buffer after every 8th row (one page):
+/// the core sends each finished row to the driver's RAM copy, the driver sends pages on flush.
+struct Pages<'a, DI>(OledSink<'a, DI>);
+
+impl<DI: ssd1306::prelude::WriteOnlyDataCommand> PixelSink<u8> for Pages<'_, DI> {
     fn set_pixel(&mut self, x: u16, y: u16, value: u8) {
-        self.framebuffer.set_pixel(x, y, value);
-        self.oled.set_pixel(x, y, value);
+        self.0.set_pixel(x, y, value);
     }
 
     fn write_row(&mut self, x: u16, y: u16, values: &[u8]) {
-        self.framebuffer.write_row(x, y, values);
-        self.oled.write_row(x, y, values);
+        self.0.write_row(x, y, values);
+    }
+
+    fn fill_row(&mut self, x: u16, y: u16, width: u16, value: u8) {
+        self.0.fill_row(x, y, width, value);
     }
 
     fn row_done(&mut self, y: u16) {
-        if y % 8 == 7 {
-            let _ = self.oled.target.0.flush();
+        self.0.row_done(y);
+        if y % 8 == 7 || y + 1 == HEIGHT {
+            let flushed = self.0.target.0.flush();
+            if flushed.is_err() {
+                self.0.failed_rows = self.0.failed_rows.saturating_add(1);
+            }
         }
     }
 }
 
-impl<D> PixelSource<u8> for FramebufferAndOled<'_, D> {
+impl<DI> PixelSource<u8> for Pages<'_, DI> {
     fn get_pixel(&self, x: u16, y: u16) -> Option<u8> {
-        self.framebuffer.get_pixel(x, y)
+        self.0.get_pixel(x, y)
+    }
+
+    fn read_row(&self, x: u16, y: u16, values: &mut [u8]) {
+        self.0.read_row(x, y, values)
     }
 }

@@ -1,0 +1,64 @@
+//! The real-board examples (firmware/examples/: a Raspberry Pi Pico with an SSD1306, and one
+//! with an ST7789) build into complete images for the RP2040: boot2 at the flash's start, the vector
+//! table after it at 0x1000_0100 with its stack pointer in RAM and its reset vector in `.text`
+//! (and the ELF's entry there too), kilobytes of `.text`, the render's functions linked, and
+//! flash and RAM within the chip (2 MB flash, 264 KB RAM). An image linked without cortex-m-rt's
+//! `link.x` (the Pico example's state before: `.boot2` alone) fails these checks.
+//!
+//! No RP2040 emulation here: the images are checked, not run.
+
+use xtask::example::{self, Example, ImageReport};
+
+/// Builds the example and checks its image; returns the report.
+fn build_and_check(example: &Example, symbols: &[&str]) -> ImageReport {
+    let elf = example::build(example).unwrap_or_else(|error| panic!("{error}"));
+    let bytes = std::fs::read(&elf).unwrap_or_else(|error| panic!("{}: {error}", elf.display()));
+    // 16 KB of code at least: the parser, the scene preparation, the tracer, the driver.
+    let report = example::check_image(&bytes, example.chip, 16 * 1024, symbols)
+        .unwrap_or_else(|problems| panic!("{}:\n  {}", elf.display(), problems.join("\n  ")));
+    eprintln!("{}: {report:?}", example.folder);
+    report
+}
+
+/// The render (the example's out-of-line `render`, with the core's `render_pga` in it) is
+/// kilobytes of code, not a stub.
+fn render_is_real(report: &ImageReport, render: &str) {
+    let size = report.symbols.iter().find(|(name, _)| name == render).map_or(0, |(_, size)| *size);
+    assert!(size >= 1024, "`{render}` is {size} bytes");
+}
+
+#[test]
+fn the_pico_ssd1306_image_is_complete() {
+    let render = "microtrace_pico_ssd1306::render";
+    let report = build_and_check(&example::PICO_SSD1306, &[render, "microtrace::shapes::sphere::", "microtrace::parser::"]);
+    render_is_real(&report, render);
+    // The 8 KB framebuffer (128 x 64 palette indices) is in RAM.
+    assert!(report.static_ram_bytes >= 128 * 64, "{} bytes of static RAM", report.static_ram_bytes);
+}
+
+#[test]
+fn the_pico_st7789_image_is_complete() {
+    let render = "microtrace_pico_st7789::render";
+    let report = build_and_check(&example::PICO_ST7789, &[render, "microtrace::shapes::sphere::", "microtrace::parser::"]);
+    render_is_real(&report, render);
+    // The 56 KB framebuffer (240 x 240 palette indices) is in RAM.
+    assert!(report.static_ram_bytes >= 240 * 240, "{} bytes of static RAM", report.static_ram_bytes);
+}
+
+/// The check itself fails an image that is not for the chip, naming each problem, and names a
+/// missing function. (The Pico example's image from before `-Tlink.x` was passed, `.boot2`
+/// alone, fails with: `.boot2` not at 0x10000000, `.text` 0 bytes, no `.vector_table`, sections
+/// outside the flash, the render's functions missing.)
+#[test]
+fn the_check_fails_an_image_not_for_the_chip() {
+    let elf = example::build(&example::PICO_SSD1306).unwrap_or_else(|error| panic!("{error}"));
+    let bytes = std::fs::read(&elf).unwrap();
+    // Wrong chip: the same image does not fit a chip whose flash and RAM are elsewhere.
+    let elsewhere = example::Chip { name: "elsewhere", flash: 0..0x4_0000, vector_table: 0, boot2: None, ram: 0x2000_0000..0x2001_0000 };
+    let problems = example::check_image(&bytes, &elsewhere, 1024, &[]).unwrap_err();
+    assert!(problems.iter().any(|problem| problem.contains("vector table is at 0x10000100")), "{problems:?}");
+    assert!(problems.iter().any(|problem| problem.contains("not within the flash")), "{problems:?}");
+    // A missing function is named.
+    let problems = example::check_image(&bytes, example::PICO_SSD1306.chip, 1024, &["no_such_function_here"]).unwrap_err();
+    assert_eq!(problems, ["no function `no_such_function_here` in the image"]);
+}
