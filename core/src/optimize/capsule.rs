@@ -584,7 +584,7 @@ mod tests {
     #[test]
     fn a_block_holds_every_pixel_of_the_stadium_in_it() {
         let mut state = 0x2545_f491;
-        let mut coordinate = |state: &mut u32, span: u32| (next(state) % span) as i16 - 160;
+        let coordinate = |state: &mut u32, span: u32| (next(state) % span) as i16 - 160;
         let (mut nonempty, mut discs) = (0, 0);
         for case in 0..3000 {
             let first = [coordinate(&mut state, 1600), coordinate(&mut state, 1000)];
