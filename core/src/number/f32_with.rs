@@ -135,6 +135,9 @@ impl<S: SquareRoot> Number for F32With<S> {
     const SCENE_LIMIT: f64 = <f32 as Number>::SCENE_LIMIT;
     const FLOATING_POINT: bool = <f32 as Number>::FLOATING_POINT;
     const SQRT_ERROR_EXPONENT: i32 = S::SQRT_ERROR_EXPONENT;
+    /// A square root as good as the correctly rounded one (within 2⁻²⁰) keeps `f32`'s bounds.
+    const SHADOW_CULLING_HOLDS: bool = S::SQRT_ERROR_EXPONENT <= -20;
+    const DEPTH_BOUNDS_HOLD: bool = S::SQRT_ERROR_EXPONENT <= -20;
     const RESOLUTION: Self = Self::new(<f32 as Number>::RESOLUTION);
     const ZERO: Self = Self::new(<f32 as Number>::ZERO);
     const ONE: Self = Self::new(<f32 as Number>::ONE);

@@ -444,6 +444,8 @@ impl Neg for Fixed16 {
 
 impl Number for Fixed16 {
     const NAME: &'static str = "fixed16";
+    /// Directions from a far light in steps of 2⁻¹⁶ miss the footprints' margins.
+    const SHADOW_CULLING_HOLDS: bool = false;
 
     fn write_literal(self, out: &mut dyn core::fmt::Write) -> core::fmt::Result {
         write!(out, "microtrace::number::Fixed16::from_bits({})", self.to_bits())

@@ -145,6 +145,21 @@ pub trait Number:
     /// (`f32-micromath`) overrides it.
     const SQRT_ERROR_EXPONENT: i32 = -20;
 
+    /// Whether shadow culling's conservative bounds (the light footprints' chords and boxes,
+    /// the capsule test) hold for shadow rays traced in this type. Their margins assume unit
+    /// directions to within the square root's error and the type's resolution; in `fixed16`
+    /// a direction from a far light (a reciprocal of a distance, in steps of 2⁻¹⁶) and in
+    /// `f32-micromath` (a 6 % square root) is farther off, and fuzzing found shadows lost
+    /// (docs/fuzzing.md, docs/deviations.md). False: shadow rays are not culled, so every
+    /// optimization still renders the unoptimized image.
+    const SHADOW_CULLING_HOLDS: bool = true;
+
+    /// Whether Sortlist's depth bounds hold for primary rays traced in this type: they assume
+    /// unit directions, which `f32-micromath`'s square root leaves up to 6 % off (a hit then
+    /// lies nearer in `t` than the bound). False: Sortlist orders the tests but never ends the
+    /// loop early.
+    const DEPTH_BOUNDS_HOLD: bool = true;
+
     /// The documented range of scene values: the largest magnitude [`Number::can_represent`]
     /// accepts. Infinite for `f64`.
     const SCENE_LIMIT: f64 = f64::INFINITY;

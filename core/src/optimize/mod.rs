@@ -292,7 +292,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
     /// Sortlist is on (for the grid's per-entry bounds).
     #[inline]
     pub fn sorts(&self) -> bool {
-        self.optimizations.sortlist
+        self.optimizations.sortlist && N::DEPTH_BOUNDS_HOLD
     }
 
     /// Whether primary rays try the previous hit object first.
@@ -304,7 +304,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
     /// Whether shadow rays are culled (shadow culling tuned on, with Extents).
     #[inline]
     pub fn culls_shadows(&self) -> bool {
-        cfg!(feature = "acceleration-tables") && self.tuning.shadow_culling && self.optimizations.extents
+        cfg!(feature = "acceleration-tables") && self.tuning.shadow_culling && self.optimizations.extents && N::SHADOW_CULLING_HOLDS
     }
 
     /// Extents: whether the pixel lies outside the object's rectangle (skip it untested).
@@ -322,7 +322,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
     /// the nearest hit so far, `t`. Strict, so an equal `t` is still tested.
     #[inline]
     pub fn beyond(&self, object: usize, t: N) -> bool {
-        self.optimizations.sortlist && self.near.get(object).is_some_and(|near| *near > t)
+        self.sorts() && self.near.get(object).is_some_and(|near| *near > t)
     }
 
     /// The object's view from the light for the per-render shadow table (always meeting
