@@ -10,6 +10,7 @@
 #                                            under `nice`, one process at a time, until the
 #                                            time given (seconds since 1970); each slice's
 #                                            executions and coverage go to fuzz/work/counts.tsv
+#   bash scripts/fuzz.sh totals              executions per target and in all, from counts.tsv
 #   bash scripts/fuzz.sh replay TARGET FILE  runs one input (a finding) through its target
 #
 # Targets: parse, prepare, render, decode. Installs cargo-fuzz when it is missing. libFuzzer
@@ -33,6 +34,23 @@ need_cargo_fuzz() {
 
 binary() {
   echo "fuzz/target/x86_64-unknown-linux-gnu/release/$1"
+}
+
+# One line of counts.tsv from a finished libFuzzer log: target, seconds, executions,
+# coverage (edges), features, corpus size, exit status, time ended.
+record() {
+  local target=$1 seconds=$2 log=$3 status=$4 runs last cov ft corp
+  runs=$(grep -oE '^stat::number_of_executed_units: [0-9]+' "$log" | grep -oE '[0-9]+$' || echo 0)
+  last=$(grep -E '^#[0-9]+' "$log" | tail -n 1)
+  cov=$(grep -oE 'cov: [0-9]+' <<<"$last" | grep -oE '[0-9]+' || echo 0)
+  ft=$(grep -oE 'ft: [0-9]+' <<<"$last" | grep -oE '[0-9]+' || echo 0)
+  corp=$(grep -oE 'corp: [0-9]+' <<<"$last" | grep -oE '[0-9]+' || echo 0)
+  printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$target" "$seconds" "$runs" "$cov" "$ft" "$corp" "$status" "$(date -u +%H:%M:%S)"
+}
+
+# Executions per target and in all, from counts.tsv.
+totals() {
+  awk -F'\t' 'NR > 1 { runs[$1] += $3; total += $3 } END { for (t in runs) printf "%s\t%d\n", t, runs[t]; printf "total\t%d\n", total }' "$1"
 }
 
 build() {
@@ -71,15 +89,19 @@ case "${1:-}" in
     ;;
   long)
     until_epoch=${2:?the end time, in seconds since 1970 (e.g. $(date -d '+1 hour' +%s))}
-    build
-    # The binaries are copied, so that rebuilding during the run does not change them.
-    mkdir -p fuzz/work/bin fuzz/artifacts
-    for target in "${TARGETS[@]}"; do cp "$(binary "$target")" "fuzz/work/bin/$target"; mkdir -p "fuzz/work/$target"; done
     counts=fuzz/work/counts.tsv
+    mkdir -p fuzz/work/bin fuzz/artifacts
     [ -f "$counts" ] || printf 'target\tseconds\truns\tcov\tft\tcorpus\texit\tended\n' >"$counts"
-    # Seconds per slice, roughly in inverse proportion to each target's speed.
-    declare -A SLICE=([parse]=600 [prepare]=600 [render]=600 [decode]=300)
+    # Seconds per slice (FUZZ_SLICES="parse=S prepare=S render=S decode=S" to change them),
+    # roughly in inverse proportion to each target's speed: decode runs ~300,000 inputs a
+    # second, parse ~20,000, prepare ~1,000, render ~100-700.
+    declare -A SLICE=([parse]=900 [prepare]=900 [render]=1200 [decode]=300)
+    for pair in ${FUZZ_SLICES:-}; do SLICE[${pair%%=*}]=${pair#*=}; done
     while [ "$(date +%s)" -lt "$until_epoch" ]; do
+      # Built and copied each round: a fix made meanwhile is in the next round, and a rebuild
+      # during a slice does not change the binary under it.
+      build
+      for target in "${TARGETS[@]}"; do cp "$(binary "$target")" "fuzz/work/bin/$target"; mkdir -p "fuzz/work/$target"; done
       for target in "${TARGETS[@]}"; do
         left=$(( until_epoch - $(date +%s) ))
         [ "$left" -gt 5 ] || break 2
@@ -91,16 +113,14 @@ case "${1:-}" in
           -artifact_prefix="fuzz/artifacts/$target-" -print_final_stats=1 >"$log" 2>&1
         status=$?
         set -e
-        runs=$(grep -oE '^stat::number_of_executed_units: [0-9]+' "$log" | grep -oE '[0-9]+$' || echo 0)
-        last=$(grep -E '^#[0-9]+' "$log" | tail -n 1)
-        cov=$(grep -oE 'cov: [0-9]+' <<<"$last" | grep -oE '[0-9]+' || echo 0)
-        ft=$(grep -oE 'ft: [0-9]+' <<<"$last" | grep -oE '[0-9]+' || echo 0)
-        corp=$(grep -oE 'corp: [0-9]+' <<<"$last" | grep -oE '[0-9]+' || echo 0)
-        printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$target" "$seconds" "$runs" "$cov" "$ft" "$corp" "$status" "$(date -u +%H:%M:%S)" >>"$counts"
+        record "$target" "$seconds" "$log" "$status" >>"$counts"
         [ "$status" -eq 0 ] || cp "$log" "fuzz/artifacts/$target-$(date +%s).log"
       done
     done
-    awk -F'\t' 'NR > 1 { runs[$1] += $3; total += $3 } END { for (t in runs) print t, runs[t]; print "total", total }' "$counts"
+    totals "$counts"
+    ;;
+  totals)
+    totals "${2:-fuzz/work/counts.tsv}"
     ;;
   replay)
     target=${2:?a target}
@@ -108,7 +128,7 @@ case "${1:-}" in
     exec "$(binary "$target")" "${3:?an input file}"
     ;;
   *)
-    sed -n '2,17p' "$0" >&2
+    sed -n '2,18p' "$0" >&2
     exit 2
     ;;
 esac
