@@ -71,7 +71,7 @@ case "${1:-}" in
       # New inputs go to the scratch copy; the committed corpus and regressions are read only.
       if ! "$(binary "$target")" "$scratch/$target" "fuzz/corpus/$target" "fuzz/regressions/$target" \
         -max_total_time="$slice" -timeout="$TIMEOUT" -rss_limit_mb=2048 \
-        -artifact_prefix="$scratch/" -print_final_stats=1 >"$scratch/$target.log" 2>&1; then
+        -artifact_prefix="$scratch/" -print_final_stats=1 -seed=1 >"$scratch/$target.log" 2>&1; then
         tail -n 40 "$scratch/$target.log" >&2
         echo "fuzz: $target found a problem (above)" >&2
         exit 1
