@@ -7,7 +7,7 @@ use std::path::Path;
 use std::process::Command;
 
 use clap::ValueEnum;
-use microtrace::formats::{self, FormatErrorKind};
+use microtrace::formats;
 use microtrace::parser::{parse, SceneError, SceneErrorKind};
 use microtrace::pixel::FrameBuffer;
 use microtrace::scene::{Primitive, Scene};
@@ -15,6 +15,7 @@ use microtrace_sim::number_type::NumberType;
 use microtrace_sim::scene_file::{in_file, SceneFileError, HOST_MAX_OBJECTS};
 use microtrace_sim::with_number_type;
 
+#[allow(dead_code)]
 mod common;
 
 use common::{scratch, text};

@@ -3,7 +3,7 @@
 //! directory or not writable, and Ctrl-C (SIGINT) while rendering and while writing. Each ends
 //! with a clear message and a non-zero exit, and never leaves a partial or temporary file.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
 
@@ -193,5 +193,4 @@ fn ctrl_c_while_writing_leaves_no_temporary_and_no_partial_file() {
         Some(0) => assert_eq!(png_size(&image), (8192, 8192)),
         other => panic!("exit {other:?}: {}", text(&output.stderr)),
     }
-    let _: PathBuf = image;
 }
