@@ -11,6 +11,7 @@
 #                                            time given (seconds since 1970); each slice's
 #                                            executions and coverage go to fuzz/work/counts.tsv
 #   bash scripts/fuzz.sh totals              executions per target and in all, from counts.tsv
+#   bash scripts/fuzz.sh coverage TARGET     line coverage of the core by the target's corpora
 #   bash scripts/fuzz.sh replay TARGET FILE  runs one input (a finding) through its target
 #
 # Targets: parse, prepare, render, decode. Installs cargo-fuzz when it is missing. libFuzzer
@@ -24,6 +25,14 @@ TARGETS=(parse prepare render decode)
 BUILD_FLAGS=(--sanitizer none --debug-assertions)
 # A slower input is a finding (libFuzzer's -timeout, in seconds: the "bounded time per input").
 TIMEOUT=10
+
+# The .mts targets get the format's keywords as a libFuzzer dictionary.
+dictionary() {
+  case "$1" in
+    parse | prepare | render) echo "-dict=fuzz/mts.dict" ;;
+    *) echo "-dict=fuzz/decode.dict" ;;
+  esac
+}
 
 need_cargo_fuzz() {
   if ! cargo fuzz --version >/dev/null 2>&1; then
@@ -71,7 +80,7 @@ case "${1:-}" in
       # New inputs go to the scratch copy; the committed corpus and regressions are read only.
       if ! "$(binary "$target")" "$scratch/$target" "fuzz/corpus/$target" "fuzz/regressions/$target" \
         -max_total_time="$slice" -timeout="$TIMEOUT" -rss_limit_mb=2048 \
-        -artifact_prefix="$scratch/" -print_final_stats=1 -seed=1 >"$scratch/$target.log" 2>&1; then
+        "$(dictionary "$target")" -artifact_prefix="$scratch/" -print_final_stats=1 -seed=1 >"$scratch/$target.log" 2>&1; then
         tail -n 40 "$scratch/$target.log" >&2
         echo "fuzz: $target found a problem (above)" >&2
         exit 1
@@ -85,7 +94,7 @@ case "${1:-}" in
     build
     mkdir -p "fuzz/work/$target" fuzz/artifacts
     exec "$(binary "$target")" "fuzz/work/$target" "fuzz/corpus/$target" "fuzz/regressions/$target" \
-      -timeout="$TIMEOUT" -rss_limit_mb=2048 -artifact_prefix="fuzz/artifacts/$target-" "$@"
+      -timeout="$TIMEOUT" -rss_limit_mb=2048 "$(dictionary "$target")" -artifact_prefix="fuzz/artifacts/$target-" "$@"
     ;;
   long)
     until_epoch=${2:?the end time, in seconds since 1970 (e.g. $(date -d '+1 hour' +%s))}
@@ -109,7 +118,7 @@ case "${1:-}" in
         log="fuzz/work/$target.log"
         set +e
         nice -n 19 "fuzz/work/bin/$target" "fuzz/work/$target" "fuzz/corpus/$target" "fuzz/regressions/$target" \
-          -max_total_time="$seconds" -timeout="$TIMEOUT" -rss_limit_mb=2048 \
+          -max_total_time="$seconds" -timeout="$TIMEOUT" -rss_limit_mb=2048 "$(dictionary "$target")" \
           -artifact_prefix="fuzz/artifacts/$target-" -print_final_stats=1 >"$log" 2>&1
         status=$?
         set -e
@@ -122,13 +131,25 @@ case "${1:-}" in
   totals)
     totals "${2:-fuzz/work/counts.tsv}"
     ;;
+  coverage)
+    # Line and region coverage of the core's files by a target's corpus (the long run's
+    # fuzz/work/TARGET, the committed corpus and the regressions), through llvm-cov.
+    target=${2:?a target}
+    need_cargo_fuzz
+    (cd fuzz && mkdir -p "work/$target" && nice cargo fuzz coverage --sanitizer none "$target" "work/$target" "corpus/$target" "regressions/$target" >&2)
+    llvm_cov="$(rustc --print sysroot)/lib/rustlib/x86_64-unknown-linux-gnu/bin/llvm-cov"
+    "$llvm_cov" report "fuzz/target/x86_64-unknown-linux-gnu/coverage/x86_64-unknown-linux-gnu/release/$target" \
+      -instr-profile="fuzz/coverage/$target/coverage.profdata" -ignore-filename-regex='/(\.cargo|rustc)/' |
+      awk '/core\/src\// { sub(/^.*core\/src\//, "core/src/", $1); printf "%-40s regions %8s  lines %8s\n", $1, $4, $10; r += $2; rm += $3; l += $8; lm += $9 }
+           END { printf "%-40s regions %7.2f%%  lines %7.2f%%\n", "core (all files above)", 100 * (r - rm) / r, 100 * (l - lm) / l }'
+    ;;
   replay)
     target=${2:?a target}
     build
     exec "$(binary "$target")" "${3:?an input file}"
     ;;
   *)
-    sed -n '2,18p' "$0" >&2
+    sed -n '2,19p' "$0" >&2
     exit 2
     ;;
 esac
