@@ -136,7 +136,11 @@ case "${1:-}" in
     # fuzz/work/TARGET, the committed corpus and the regressions), through llvm-cov.
     target=${2:?a target}
     need_cargo_fuzz
-    (cd fuzz && mkdir -p "work/$target" && nice cargo fuzz coverage --sanitizer none "$target" "work/$target" "corpus/$target" "regressions/$target" >&2)
+    # A copy of the long run's corpus: a running fuzzer removes files from it as it reduces.
+    snapshot=$(mktemp -d)
+    trap 'rm -rf "$snapshot"' EXIT
+    [ -d "fuzz/work/$target" ] && cp -r "fuzz/work/$target/." "$snapshot/"
+    (cd fuzz && nice cargo fuzz coverage --sanitizer none "$target" "$snapshot" "corpus/$target" "regressions/$target" >&2)
     llvm_cov="$(rustc --print sysroot)/lib/rustlib/x86_64-unknown-linux-gnu/bin/llvm-cov"
     "$llvm_cov" report "fuzz/target/x86_64-unknown-linux-gnu/coverage/x86_64-unknown-linux-gnu/release/$target" \
       -instr-profile="fuzz/coverage/$target/coverage.profdata" -ignore-filename-regex='/(\.cargo|rustc)/' |
