@@ -156,7 +156,7 @@ fn ctrl_c_while_rendering_stops_with_a_message_and_no_file() {
     let image = directory.join("image.png");
     let pga = directory.join("image.pga");
     // Seconds of work on one thread: the signal lands in the middle of the render.
-    let child = spawn(&["render", "scenes/lattice.mts", "--size", "3000x3000", "--threads", "1", "--out", path_text(&image), "--pga", path_text(&pga)]);
+    let child = spawn(&["render", "scenes/lattice.mts", "--size", "6000x6000", "--threads", "1", "--out", path_text(&image), "--pga", path_text(&pga)]);
     std::thread::sleep(Duration::from_millis(800));
     interrupt(&child);
     let output = child.wait_with_output().unwrap();
