@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs what MicroTrace's builds and tests need, when it is missing: the Cortex-M rust
 # targets and llvm-tools (firmware), QEMU (firmware tests), SDL2 (the simulator window),
-# Xvfb (the window test without a display), flip-link (the real-board examples). Safe to run again; does nothing when all is there.
+# Xvfb (the window test without a display), flip-link (the real-board examples), cargo-fuzz
+# (the fuzz targets). Safe to run again; does nothing when all is there.
 set -euo pipefail
 
 need_rustup=()
@@ -36,4 +37,9 @@ if [ ${#need_apt[@]} -gt 0 ]; then
   [ "$(id -u)" -eq 0 ] || sudo_prefix="sudo"
   $sudo_prefix apt-get update -qq >&2
   DEBIAN_FRONTEND=noninteractive $sudo_prefix apt-get install -y -qq "${need_apt[@]}" >&2
+fi
+
+if ! cargo fuzz --version >/dev/null 2>&1; then
+  echo "setup: installing cargo-fuzz" >&2
+  cargo install --locked --quiet cargo-fuzz >&2
 fi

@@ -8,6 +8,7 @@ use std::fs::{self, File, OpenOptions};
 use std::io::{self, BufReader, BufWriter, Write};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU32, Ordering};
+use std::sync::{Mutex, MutexGuard};
 
 use microtrace::formats::{self, lut, pga_compressed, pga_uncompressed, rgb, DecodedEvent, FormatError};
 use microtrace::pixel::Rgb888;
@@ -27,6 +28,36 @@ fn invalid_data(error: FormatError) -> io::Error {
     io::Error::new(io::ErrorKind::InvalidData, error)
 }
 
+/// Every temporary file this process has open, for [`remove_temporaries_on_interrupt`]. A file
+/// is listed from its creation until it is renamed into place or removed; the rename happens
+/// with the list locked, so an interrupt sees each file either listed or in place, whole.
+static TEMPORARIES: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+
+fn temporaries() -> MutexGuard<'static, Vec<PathBuf>> {
+    TEMPORARIES.lock().unwrap_or_else(|poisoned| poisoned.into_inner())
+}
+
+/// What `microtrace` says when Ctrl-C stops it (exit status 130, as a shell reports SIGINT).
+pub const INTERRUPTED: &str = "microtrace: interrupted (Ctrl-C): stopped, no output file written or left half-written";
+
+/// Installs the Ctrl-C (SIGINT) handler: it removes every temporary file of this process, says
+/// [`INTERRUPTED`] on stderr and exits with status 130. Files already renamed into place are
+/// complete; the one being written is not left behind, and no target file is touched.
+pub fn remove_temporaries_on_interrupt() {
+    let installed = ctrlc::set_handler(|| {
+        let mut live = temporaries();
+        for path in live.drain(..) {
+            let _ = fs::remove_file(path);
+        }
+        eprintln!("\n{INTERRUPTED}");
+        // The list stays locked: no rename can complete after this point.
+        std::process::exit(130);
+    });
+    if let Err(error) = installed {
+        eprintln!("microtrace: cannot catch Ctrl-C ({error}); an interrupted write may leave a temporary file");
+    }
+}
+
 /// Removes the temporary file when dropped, unless it was renamed into place; this also
 /// covers a panic inside the caller's writer.
 struct TempFile {
@@ -38,6 +69,7 @@ impl Drop for TempFile {
     fn drop(&mut self) {
         if !self.renamed {
             let _ = fs::remove_file(&self.path);
+            temporaries().retain(|live| *live != self.path);
         }
     }
 }
@@ -56,10 +88,17 @@ fn create_temp_next_to(path: &Path) -> io::Result<(File, TempFile)> {
         temp_name.push(name);
         temp_name.push(format!(".{}.{n}.tmp", std::process::id()));
         let temp = directory.join(temp_name);
+        // Listed before it exists, so that an interrupt between the two cannot miss it.
+        temporaries().push(temp.clone());
         match OpenOptions::new().write(true).create_new(true).open(&temp) {
             Ok(file) => return Ok((file, TempFile { path: temp, renamed: false })),
-            Err(error) if error.kind() == io::ErrorKind::AlreadyExists && n % 1000 != 999 => continue,
-            Err(error) => return Err(error),
+            Err(error) => {
+                temporaries().retain(|live| *live != temp);
+                if error.kind() == io::ErrorKind::AlreadyExists && n % 1000 != 999 {
+                    continue;
+                }
+                return Err(error);
+            }
         }
     }
 }
@@ -74,7 +113,9 @@ pub fn write_atomically(path: &Path, write: impl FnOnce(&mut dyn Write) -> io::R
     let file = writer.into_inner().map_err(|error| error.into_error())?;
     file.sync_all()?;
     drop(file);
+    let mut live = temporaries();
     fs::rename(&temp.path, path)?;
+    live.retain(|listed| *listed != temp.path);
     temp.renamed = true;
     Ok(())
 }

@@ -26,6 +26,7 @@ enum Command {
 
 fn main() {
     let cli = Cli::parse();
+    microtrace_sim::files::remove_temporaries_on_interrupt();
     let result = match cli.command {
         Command::Render(args) => commands::render::run(args),
         Command::Decode(args) => commands::decode::run(args),

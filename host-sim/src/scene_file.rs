@@ -1,9 +1,11 @@
 //! Loading a `.mts` file with errors that name the file and line, and the command-line
 //! overrides every command shares.
 
-use std::path::Path;
+use std::fmt;
+use std::path::{Path, PathBuf};
 
-use anyhow::{bail, Context};
+use anyhow::Context;
+use microtrace::parser::SceneError;
 use microtrace::scene::{Optimizations, SceneDescription};
 
 /// How many objects a host build holds (the firmware sizes this to each scene).
@@ -11,11 +13,41 @@ pub const HOST_MAX_OBJECTS: usize = 512;
 
 pub type HostScene = SceneDescription<HOST_MAX_OBJECTS>;
 
+/// A scene error with the file it is in: `FILE:line N: reason` (or `FILE: reason` for an error
+/// tied to no line), the one format of every parse and preparation error the command prints.
+/// The scene error stays typed, so callers can still tell its kind.
+#[derive(Debug)]
+pub struct SceneFileError {
+    pub path: PathBuf,
+    pub error: SceneError,
+}
+
+impl fmt::Display for SceneFileError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if self.error.line == 0 {
+            write!(f, "{}: {}", self.path.display(), self.error)
+        } else {
+            write!(f, "{}:{}", self.path.display(), self.error)
+        }
+    }
+}
+
+impl std::error::Error for SceneFileError {}
+
+/// Names `path` in `error` when it is a bare [`SceneError`] (from preparing the scene read from
+/// `path`); any other error is returned as it is.
+pub fn in_file(path: &Path, error: anyhow::Error) -> anyhow::Error {
+    match error.downcast::<SceneError>() {
+        Ok(error) => SceneFileError { path: path.to_owned(), error }.into(),
+        Err(other) => other,
+    }
+}
+
 pub fn load(path: &Path) -> anyhow::Result<Box<HostScene>> {
     let text = std::fs::read(path).with_context(|| format!("cannot read scene {}", path.display()))?;
     match microtrace::parser::parse::<HOST_MAX_OBJECTS>(&text) {
         Ok(scene) => Ok(Box::new(scene)),
-        Err(error) => bail!("{}:{}", path.display(), error),
+        Err(error) => Err(SceneFileError { path: path.to_owned(), error }.into()),
     }
 }
 

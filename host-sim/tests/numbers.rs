@@ -75,6 +75,9 @@ fn a_scene_beyond_fixed_range_is_an_error_naming_the_type() {
     let fixed = microtrace(&arguments("fixed"));
     assert!(!fixed.status.success());
     assert!(text(&fixed.stderr).contains("`fixed`"), "{}", text(&fixed.stderr));
+    // A preparation error names the file and the line of the statement, as a parse error does.
+    let expected = format!("microtrace: {}:line 4: the eye reaches 30000", scene.display());
+    assert!(text(&fixed.stderr).starts_with(&expected), "{}", text(&fixed.stderr));
     assert!(!png.exists(), "a failed render wrote {}", png.display());
     let float = microtrace(&arguments("f32"));
     assert!(float.status.success(), "{}", text(&float.stderr));
@@ -135,7 +138,7 @@ fn bench_numbers_reports_every_type_out_of_range_scenes_and_firmware_figures() {
             assert!(markdown.contains(&format!("| {scene} | {number} |")), "no row for {scene} {number}:\n{markdown}");
         }
     }
-    assert!(markdown.contains("| far 32x16 | fixed | **out of range**: line 0: ") && markdown.contains("`fixed`,"), "{markdown}");
+    assert!(markdown.contains("| far 32x16 | fixed | **out of range**: line 4: the eye reaches ") && markdown.contains("`fixed`,"), "{markdown}");
     assert!(markdown.contains("| far 32x16 | fixed16 | **out of range**"), "{markdown}");
     assert!(markdown.contains("- `broken`: "), "{markdown}");
     assert!(!markdown.lines().any(|line| line.starts_with("| notes ")) && !markdown.contains("`notes`"), "a .txt file was taken for a scene");

@@ -199,7 +199,7 @@ impl<N: Number> ScreenMap<N> {
                     + N::RESOLUTION.times_power_of_two(17)
             };
             // ceil(low − m) = −floor(m − low).
-            let first = -((margin(low) - low).floor_to_i32());
+            let first = (margin(low) - low).floor_to_i32().saturating_neg();
             let last = (high + margin(high)).floor_to_i32();
             *slot = (first, last);
         }

@@ -1,5 +1,5 @@
 //! Errors of the scene format: a line number and a reason, with a `Display` that reads
-//! `line 12: <reason>`. Scene preparation ([`crate::scene::Scene::prepare`]) reports its own
+//! `line 12: <reason>` (the host adds the file: `scene.mts:line 12: <reason>`). Scene preparation ([`crate::scene::Scene::prepare`]) reports its own
 //! problems with the same type.
 
 use core::fmt;
@@ -109,8 +109,9 @@ pub enum SceneErrorKind {
     PrimitiveNotCompiled { primitive: &'static str },
     /// A scene value does not fit the number type the scene is prepared in (scene
     /// preparation): `what` reached `value` in magnitude, beyond `limit`, the documented range
-    /// of the type called `number`. The error's line is the object's first line, or 0 for the
-    /// camera and the light.
+    /// of the type called `number`. The error's line is the object's first line, or the line of
+    /// the `window`, `viewplane`, `perspective` or `light` statement that set the value (0 for
+    /// a default).
     OutOfRangeForNumberType { what: &'static str, number: &'static str, value: f64, limit: f64 },
 }
 
@@ -183,8 +184,13 @@ fn write_magnitude(f: &mut fmt::Formatter<'_>, value: f64) -> fmt::Result {
 }
 
 impl fmt::Display for SceneError {
+    /// `line N: reason`, or the reason alone when the error is tied to no line (line 0). A host
+    /// that read the scene from a file puts `FILE:` in front (`FILE:line N: reason`).
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "line {}: {}", self.line, self.kind)
+        if self.line != 0 {
+            write!(f, "line {}: ", self.line)?;
+        }
+        write!(f, "{}", self.kind)
     }
 }
 

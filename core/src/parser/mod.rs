@@ -386,20 +386,27 @@ fn statement<const MAX_OBJECTS: usize>(
                 }));
             }
             scene.window = Window { x1, x2, y1, y2 };
+            scene.lines.window = line;
         }
-        Keyword::Viewplane => scene.view_plane = s.real(0, "viewplane D")?,
+        Keyword::Viewplane => {
+            scene.view_plane = s.real(0, "viewplane D")?;
+            scene.lines.view_plane = line;
+        }
         Keyword::Perspective => {
             scene.projection = Projection::Perspective { eye: s.vector(0, ["perspective X", "perspective Y", "perspective Z"])? };
+            scene.lines.projection = line;
         }
         Keyword::Parallel => {
             scene.projection =
                 Projection::Parallel { direction: s.direction(0, ["parallel DX", "parallel DY", "parallel DZ"])? };
+            scene.lines.projection = line;
         }
         Keyword::Light => {
             scene.light = match s.word(0, &["point", "direction"], "`point` or `direction`")? {
                 0 => Light::Point(s.vector(1, ["light point X", "light point Y", "light point Z"])?),
                 _ => Light::Direction(s.direction(1, ["light direction DX", "light direction DY", "light direction DZ"])?),
             };
+            scene.lines.light = line;
         }
         Keyword::Ambient => scene.ambient = s.non_negative(0, "ambient")?,
         Keyword::Background => scene.background = s.integer(0, "background", 0, 255)? as u8,

@@ -164,6 +164,19 @@ pub struct SceneDescription<const MAX_OBJECTS: usize> {
     /// The 256-entry look-up table built from the `group` statements.
     pub palette: Palette,
     pub objects: Vec<ObjectDescription, MAX_OBJECTS>,
+    /// Where the camera and light settings were written, for errors that scene preparation
+    /// finds in them (0: the format's default, not written).
+    pub lines: SettingLines,
+}
+
+/// The line of the last `window`, `viewplane`, projection (`perspective` / `parallel`) and
+/// `light` statement of a scene, 0 where the default holds.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct SettingLines {
+    pub window: u32,
+    pub view_plane: u32,
+    pub projection: u32,
+    pub light: u32,
 }
 
 impl<const MAX_OBJECTS: usize> Default for SceneDescription<MAX_OBJECTS> {
@@ -182,6 +195,7 @@ impl<const MAX_OBJECTS: usize> Default for SceneDescription<MAX_OBJECTS> {
             optimizations: Optimizations::ALL,
             palette: Palette::grey(),
             objects: Vec::new(),
+            lines: SettingLines::default(),
         }
     }
 }

@@ -129,13 +129,13 @@ impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
         description: &SceneDescription<CAPACITY>,
     ) -> Result<(Camera<N>, PreparedLight<N>), SceneError> {
         let camera = Camera::new(description.viewport, description.window, description.view_plane, description.projection)
-            .ok_or(SceneError { line: 0, kind: SceneErrorKind::ZeroDirection })?;
+            .ok_or(SceneError { line: description.lines.projection, kind: SceneErrorKind::ZeroDirection })?;
         let light = match description.light {
             Light::Point(position) => PreparedLight::Point(Vector3::from_f64(position)),
             Light::Direction(direction) => {
                 let length = libm::sqrt(direction.iter().map(|c| c * c).sum::<f64>());
                 if length == 0.0 || !length.is_finite() {
-                    return Err(SceneError { line: 0, kind: SceneErrorKind::ZeroDirection });
+                    return Err(SceneError { line: description.lines.light, kind: SceneErrorKind::ZeroDirection });
                 }
                 PreparedLight::Direction(Vector3::from_f64(direction.map(|c| c / length)))
             }

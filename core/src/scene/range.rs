@@ -97,16 +97,17 @@ pub fn check_object<N: Number>(object: &ObjectDescription, inverse: &Matrix4, or
     )
 }
 
-/// Checks the camera and a point light (a directional light is a unit vector).
+/// Checks the camera and a point light (a directional light is a unit vector). Each error names
+/// the line of the statement that set the value (`description.lines`; 0 for a default).
 pub fn check_camera_and_light<N: Number, const CAPACITY: usize>(description: &SceneDescription<CAPACITY>) -> Result<(), SceneError> {
-    let window = description.window;
-    check::<N>(0, "the window", largest([window.x1, window.x2, window.y1, window.y2]))?;
-    check::<N>(0, "the view plane distance", description.view_plane.abs())?;
+    let (window, lines) = (description.window, description.lines);
+    check::<N>(lines.window, "the window", largest([window.x1, window.x2, window.y1, window.y2]))?;
+    check::<N>(lines.view_plane, "the view plane distance", description.view_plane.abs())?;
     if let Projection::Perspective { eye } = description.projection {
-        check::<N>(0, "the eye", largest(eye))?;
+        check::<N>(lines.projection, "the eye", largest(eye))?;
     }
     if let Light::Point(position) = description.light {
-        check::<N>(0, "the light", largest(position))?;
+        check::<N>(lines.light, "the light", largest(position))?;
     }
     Ok(())
 }

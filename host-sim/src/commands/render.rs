@@ -86,7 +86,11 @@ pub fn run(args: RenderArgs) -> anyhow::Result<()> {
     apply_overrides(&mut scene, &args);
     let label = format!("rendering {}", args.scene.display());
     let threads = args.threads.unwrap_or_else(default_threads);
-    let rendered = render_scene_on_threads(&scene, args.number, args.mode, Some(&label), threads)?;
+    let rendered = render_scene_on_threads(&scene, args.number, args.mode, Some(&label), threads)
+        .map_err(|error| match error.downcast::<microtrace::parser::SceneError>() {
+            Ok(error) => scene_file::SceneFileError { path: args.scene.clone(), error }.into(),
+            Err(other) => other.context(format!("cannot render {}", args.scene.display())),
+        })?;
     write_outputs(&args, &rendered)
 }
 

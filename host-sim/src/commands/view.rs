@@ -127,7 +127,7 @@ pub fn run(args: ViewArgs) -> anyhow::Result<()> {
     let mut settings = Settings { number: args.number, mode: args.mode, overlay: args.overlay, fill: args.fill };
 
     loop {
-        let finished = render(&scene, &settings, &mut display, &mut view)?;
+        let finished = render(&scene, &settings, &mut display, &mut view).map_err(|error| scene_file::in_file(&args.scene, error))?;
         eprint!("{}", statistics_table(&finished.rendered));
         eprintln!(
             "preprocess {:.1} ms, trace {:.1} ms ({} {} {})",
@@ -137,7 +137,7 @@ pub fn run(args: ViewArgs) -> anyhow::Result<()> {
             mode_name(settings.mode),
             optimization_names(scene.optimizations)
         );
-        let oled = ui::oled::render(&scene, settings.number)?;
+        let oled = ui::oled::render(&scene, settings.number).map_err(|error| scene_file::in_file(&args.scene, error))?;
         draw_finished(&scene, &settings, &finished, &oled, &mut display, Point::new(panel_x as i32, 4));
         view.update(&display);
         if let Some(path) = &args.screenshot {
@@ -167,7 +167,7 @@ pub fn run(args: ViewArgs) -> anyhow::Result<()> {
                     Action::ToggleExtents => o.extents = !o.extents,
                     Action::ToggleGrid => o.grid = !o.grid,
                     Action::ToggleSortlist => o.sortlist = !o.sortlist,
-                    Action::CycleNumber => match next_number_type(&scene, settings.number) {
+                    Action::CycleNumber => match next_number_type(&scene, settings.number, &args.scene) {
                         Some(number) => settings.number = number,
                         None => continue,
                     },
@@ -197,7 +197,7 @@ pub fn run(args: ViewArgs) -> anyhow::Result<()> {
 /// The next number type after `current` that can represent the scene; the ones that cannot
 /// (beyond a fixed-point type's range) are skipped with their preparation error on stderr,
 /// rather than ending the window.
-fn next_number_type(scene: &HostScene, current: NumberType) -> Option<NumberType> {
+fn next_number_type(scene: &HostScene, current: NumberType, path: &std::path::Path) -> Option<NumberType> {
     let all = NumberType::ALL;
     let at = all.iter().position(|n| *n == current).unwrap_or(0);
     (1..all.len()).map(|step| all[(at + step) % all.len()]).find(|&number| {
@@ -205,6 +205,7 @@ fn next_number_type(scene: &HostScene, current: NumberType) -> Option<NumberType
         match prepared {
             Ok(()) => true,
             Err(error) => {
+                let error = scene_file::SceneFileError { path: path.to_owned(), error };
                 eprintln!("microtrace: skipping {}: {error}", number.name());
                 false
             }
@@ -347,7 +348,7 @@ mod tests {
         // Beyond fixed16's ±16 384 (the window) but within fixed's ±26 000.
         let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes/hard/large_coordinates.mts");
         let scene = scene_file::load(&path).unwrap();
-        assert_eq!(next_number_type(&scene, NumberType::F32), Some(NumberType::Fixed));
-        assert_eq!(next_number_type(&scene, NumberType::Fixed), Some(NumberType::F32Micromath));
+        assert_eq!(next_number_type(&scene, NumberType::F32, &path), Some(NumberType::Fixed));
+        assert_eq!(next_number_type(&scene, NumberType::Fixed, &path), Some(NumberType::F32Micromath));
     }
 }

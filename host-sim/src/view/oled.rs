@@ -51,7 +51,7 @@ pub fn render(scene: &HostScene, number: NumberType) -> anyhow::Result<Simulator
     let mut oled = SimulatorDisplay::<Gray4>::new(Size::new(u32::from(WIDTH), u32::from(HEIGHT)));
     let mut buffer = vec![0u8; usize::from(width) * usize::from(height)];
     with_number_type!(number, N => {
-        let prepared = Box::new(Scene::<N, HOST_MAX_OBJECTS>::prepare(&fitted).map_err(|error| anyhow::anyhow!("{error}"))?);
+        let prepared = Box::new(Scene::<N, HOST_MAX_OBJECTS>::prepare(&fitted).map_err(anyhow::Error::new)?);
         let frame = FrameBuffer::new(&mut buffer, width, height).expect("buffer sized to the viewport");
         let mut sink = OledSink { frame, grey: GreyDrawTargetSink { target: Borrowed(&mut oled), palette: &fitted.palette, offset: Point::zero() } };
         render_pga(&*prepared, &mut sink, &mut Statistics::default());

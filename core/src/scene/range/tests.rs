@@ -98,13 +98,16 @@ fn near_singular_transforms() {
 #[test]
 fn camera_and_light_are_checked() {
     let window = "viewport 0 15 0 15\nwindow 29000 29001 0 1\nsphere\n";
-    assert_eq!(rejection::<Fixed>(window), (0, "the window", 29001.0));
-    let eye = "perspective 0 0 30000\nsphere\n";
+    // Each error names the line of the statement that set the value.
+    assert_eq!(rejection::<Fixed>(window), (2, "the window", 29001.0));
+    let eye = "# the eye\nperspective 0 0 30000\nsphere\n";
+    assert_eq!(rejection::<Fixed>(eye).0, 2);
     assert_eq!(rejection::<Fixed>(eye).1, "the eye");
-    let light = "light point 0 30000 0\nsphere\n";
+    let light = "\n\nlight point 0 30000 0\nsphere\n";
+    assert_eq!(rejection::<Fixed>(light).0, 3);
     assert_eq!(rejection::<Fixed>(light).1, "the light");
     assert_eq!(prepare::<f64>(light), Ok(()));
     let plane = "viewplane 1e20\nsphere\n";
-    assert_eq!(rejection::<f32>(plane).1, "the view plane distance");
+    assert_eq!(rejection::<f32>(plane), (1, "the view plane distance", 1e20));
     assert_eq!(prepare::<f64>(plane), Ok(()));
 }

@@ -1,0 +1,109 @@
+//! The fuzz targets' checks (fuzz/src/checks.rs, the same file the libFuzzer targets run) on
+//! every committed corpus file and every regression input (fuzz/regressions/: the inputs the
+//! long runs found, each kept after its fix; docs/fuzzing.md), under `cargo test` on stable.
+//!
+//! `MICROTRACE_REPLAY_DIR=DIR cargo test -p microtrace-tests --test fuzz_corpus replay -- --ignored`
+//! runs a directory of inputs (e.g. a long run's fuzz/work/TARGET) through all four checks.
+
+use std::path::{Path, PathBuf};
+
+#[path = "../../fuzz/src/checks.rs"]
+#[allow(dead_code)]
+mod checks;
+
+fn inputs(directory: &str) -> Vec<PathBuf> {
+    let directory = Path::new(env!("CARGO_MANIFEST_DIR")).join("..").join(directory);
+    let mut files: Vec<PathBuf> = std::fs::read_dir(&directory)
+        .unwrap_or_else(|error| panic!("{}: {error}", directory.display()))
+        .map(|entry| entry.unwrap().path())
+        .filter(|path| path.is_file())
+        .collect();
+    files.sort();
+    files
+}
+
+/// Runs `check` on every input of the target's corpus and regressions, naming a failing file.
+fn replay(target: &str, check: fn(&[u8])) -> usize {
+    let mut count = 0;
+    for directory in [format!("fuzz/corpus/{target}"), format!("fuzz/regressions/{target}")] {
+        for path in inputs(&directory) {
+            let data = std::fs::read(&path).unwrap();
+            if std::panic::catch_unwind(|| check(&data)).is_err() {
+                panic!("fuzz target {target} fails on {}", path.display());
+            }
+            count += 1;
+        }
+    }
+    count
+}
+
+#[test]
+fn parse_corpus_and_regressions() {
+    assert!(replay("parse", checks::parse_input) >= 20);
+}
+
+#[test]
+fn prepare_corpus_and_regressions() {
+    assert!(replay("prepare", checks::prepare_input) >= 20);
+}
+
+#[test]
+fn render_corpus_and_regressions() {
+    assert!(replay("render", checks::render_input) >= 20);
+}
+
+#[test]
+fn decode_corpus_and_regressions() {
+    assert!(replay("decode", checks::decode_input) >= 6);
+}
+
+/// Finding 1 (docs/fuzzing.md): a huge coordinate in f64 made the capsule's screen range
+/// negate `i32::MIN` (`attempt to negate with overflow` in optimize/capsule.rs). The inputs
+/// are the fuzzers' own, kept in fuzz/regressions/; this names them so the fix cannot go.
+#[test]
+fn finding_capsule_range_negation_overflow() {
+    let inputs = inputs("fuzz/regressions/prepare");
+    let far = inputs.iter().find(|p| p.ends_with("capsule-negate-overflow-far")).expect("the input is kept");
+    checks::prepare_input(&std::fs::read(far).unwrap());
+    let inputs = self::inputs("fuzz/regressions/render");
+    let grazing = inputs.iter().find(|p| p.ends_with("capsule-negate-overflow-grazing")).expect("the input is kept");
+    checks::render_input(&std::fs::read(grazing).unwrap());
+}
+
+/// Findings 2 and 3 (docs/fuzzing.md, open): optimization combinations change the image in
+/// f32-micromath (Extents, Sortlist) and fixed16 (Extents, Sortlist, Pixelbuffer), and
+/// Pixelbuffer does in f64 with an eye ~4e39 away. Ignored until the optimizations are fixed;
+/// the render target leaves f32-micromath and fixed16 uncompared until then
+/// (`checks::IDENTITY_KNOWN_TO_DIFFER`).
+#[test]
+#[ignore = "open finding: optimizations change the image in f32-micromath and fixed16 (docs/fuzzing.md)"]
+fn finding_optimizations_change_the_image_in_f32_micromath_and_fixed16() {
+    for path in inputs("fuzz/regressions/render-open") {
+        let data = std::fs::read(&path).unwrap();
+        if std::panic::catch_unwind(|| checks::render_comparing(&data, &[])).is_err() {
+            panic!("{}: an optimization combination differs from --opt none", path.display());
+        }
+    }
+}
+
+#[test]
+#[ignore = "a tool: MICROTRACE_REPLAY_DIR=DIR replays a directory through every check"]
+fn replay_directory() {
+    let Some(directory) = std::env::var_os("MICROTRACE_REPLAY_DIR") else { return };
+    let strict = std::env::var_os("MICROTRACE_REPLAY_STRICT").is_some();
+    let mut failing = Vec::new();
+    for entry in std::fs::read_dir(directory).unwrap() {
+        let path = entry.unwrap().path();
+        let data = std::fs::read(&path).unwrap();
+        let outcome = std::panic::catch_unwind(|| {
+            checks::parse_input(&data);
+            checks::prepare_input(&data);
+            if strict { checks::render_comparing(&data, &[]) } else { checks::render_input(&data) }
+            checks::decode_input(&data);
+        });
+        if outcome.is_err() {
+            failing.push(path.display().to_string());
+        }
+    }
+    assert!(failing.is_empty(), "failing inputs:\n{}", failing.join("\n"));
+}
