@@ -70,15 +70,33 @@ fn finding_capsule_range_negation_overflow() {
     checks::render_input(&std::fs::read(grazing).unwrap());
 }
 
-/// Findings 2 and 3 (docs/fuzzing.md, open): optimization combinations change the image in
-/// f32-micromath (Extents, Sortlist) and fixed16 (Extents, Sortlist, Pixelbuffer), and
-/// Pixelbuffer does in f64 with an eye ~4e39 away. Ignored until the optimizations are fixed;
-/// the render target leaves f32-micromath and fixed16 uncompared until then
-/// (`checks::IDENTITY_KNOWN_TO_DIFFER`).
+/// The open findings' inputs that still differ (see below).
+const STILL_OPEN: [&str; 2] = ["fixed16-pixelbuffer", "f64-pixelbuffer-eye-at-4e39"];
+
+/// Finding 2 (docs/fuzzing.md), fixed but for Pixelbuffer in fixed16: optimization
+/// combinations changed the image in f32-micromath (Extents, Sortlist) and fixed16 (Extents,
+/// Sortlist); the culls whose bounds do not hold in those types (shadow culling, Sortlist's
+/// exit) are now off there (deviation 30).
 #[test]
-#[ignore = "open finding: optimizations change the image in f32-micromath and fixed16 (docs/fuzzing.md)"]
-fn finding_optimizations_change_the_image_in_f32_micromath_and_fixed16() {
-    for path in inputs("fuzz/regressions/render-open") {
+fn finding_optimizations_changed_the_image_in_f32_micromath_and_fixed16() {
+    let fixed: Vec<_> = inputs("fuzz/regressions/render-open").into_iter().filter(|path| !STILL_OPEN.iter().any(|name| path.ends_with(name))).collect();
+    assert_eq!(fixed.len(), 3, "the finding's inputs are kept");
+    for path in fixed {
+        let data = std::fs::read(&path).unwrap();
+        if std::panic::catch_unwind(|| checks::render_comparing(&data, &[])).is_err() {
+            panic!("{}: an optimization combination differs from --opt none", path.display());
+        }
+    }
+}
+
+/// Open (docs/fuzzing.md): Pixelbuffer changes the image in fixed16 for a cube 8000 across (a
+/// quarter of the type's range), and in f64 with an eye about 4e39 away. Ignored until fixed;
+/// the render target leaves fixed16 uncompared until then (`checks::IDENTITY_KNOWN_TO_DIFFER`).
+#[test]
+#[ignore = "open findings: Pixelbuffer changes the image in fixed16 near its range and in f64 with an eye ~4e39 away (docs/fuzzing.md)"]
+fn finding_pixelbuffer_changes_the_image_in_fixed16_near_its_range_and_with_a_very_far_eye() {
+    for name in STILL_OPEN {
+        let path = inputs("fuzz/regressions/render-open").into_iter().find(|path| path.ends_with(name)).expect("the input is kept");
         let data = std::fs::read(&path).unwrap();
         if std::panic::catch_unwind(|| checks::render_comparing(&data, &[])).is_err() {
             panic!("{}: an optimization combination differs from --opt none", path.display());

@@ -446,6 +446,8 @@ impl Number for Fixed16 {
     const NAME: &'static str = "fixed16";
     /// Directions from a far light in steps of 2⁻¹⁶ miss the footprints' margins.
     const SHADOW_CULLING_HOLDS: bool = false;
+    /// A depth bound near the type's range (a cube 8000 across) misses by more than its margin.
+    const DEPTH_BOUNDS_HOLD: bool = false;
 
     fn write_literal(self, out: &mut dyn core::fmt::Write) -> core::fmt::Result {
         write!(out, "microtrace::number::Fixed16::from_bits({})", self.to_bits())
