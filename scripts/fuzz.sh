@@ -26,6 +26,16 @@ BUILD_FLAGS=(--sanitizer none --debug-assertions)
 # A slower input is a finding (libFuzzer's -timeout, in seconds: the "bounded time per input").
 TIMEOUT=10
 
+# The seeds of a target: the project's own scenes for the .mts targets (libFuzzer reads the
+# folder and its subfolders: the thesis scenes, scenes/hard, scenes/spd; read only, so no
+# copy of them is kept), fuzz/corpus/decode for the decoders.
+seeds() {
+  case "$1" in
+    parse | prepare | render) echo "scenes" ;;
+    *) echo "fuzz/corpus/$1" ;;
+  esac
+}
+
 # The .mts targets get the format's keywords as a libFuzzer dictionary.
 dictionary() {
   case "$1" in
@@ -78,7 +88,7 @@ case "${1:-}" in
       mkdir -p "$scratch/$target"
       echo "== fuzz $target for ${slice}s" >&2
       # New inputs go to the scratch copy; the committed corpus and regressions are read only.
-      if ! "$(binary "$target")" "$scratch/$target" "fuzz/corpus/$target" "fuzz/regressions/$target" \
+      if ! "$(binary "$target")" "$scratch/$target" "$(seeds "$target")" "fuzz/regressions/$target" \
         -max_total_time="$slice" -timeout="$TIMEOUT" -rss_limit_mb=2048 \
         "$(dictionary "$target")" -artifact_prefix="$scratch/" -print_final_stats=1 -seed=1 >"$scratch/$target.log" 2>&1; then
         tail -n 40 "$scratch/$target.log" >&2
@@ -93,7 +103,7 @@ case "${1:-}" in
     shift 2
     build
     mkdir -p "fuzz/work/$target" fuzz/artifacts
-    exec "$(binary "$target")" "fuzz/work/$target" "fuzz/corpus/$target" "fuzz/regressions/$target" \
+    exec "$(binary "$target")" "fuzz/work/$target" "$(seeds "$target")" "fuzz/regressions/$target" \
       -timeout="$TIMEOUT" -rss_limit_mb=2048 "$(dictionary "$target")" -artifact_prefix="fuzz/artifacts/$target-" "$@"
     ;;
   long)
@@ -117,7 +127,7 @@ case "${1:-}" in
         seconds=$(( SLICE[$target] < left ? SLICE[$target] : left ))
         log="fuzz/work/$target.log"
         set +e
-        nice -n 19 "fuzz/work/bin/$target" "fuzz/work/$target" "fuzz/corpus/$target" "fuzz/regressions/$target" \
+        nice -n 19 "fuzz/work/bin/$target" "fuzz/work/$target" "$(seeds "$target")" "fuzz/regressions/$target" \
           -max_total_time="$seconds" -timeout="$TIMEOUT" -rss_limit_mb=2048 "$(dictionary "$target")" \
           -artifact_prefix="fuzz/artifacts/$target-" -print_final_stats=1 >"$log" 2>&1
         status=$?
@@ -140,7 +150,7 @@ case "${1:-}" in
     snapshot=$(mktemp -d)
     trap 'rm -rf "$snapshot"' EXIT
     [ -d "fuzz/work/$target" ] && cp -r "fuzz/work/$target/." "$snapshot/"
-    (cd fuzz && nice cargo fuzz coverage --sanitizer none "$target" "$snapshot" "corpus/$target" "regressions/$target" >&2)
+    (cd fuzz && nice cargo fuzz coverage --sanitizer none "$target" "$snapshot" "../$(seeds "$target")" "regressions/$target" >&2)
     llvm_cov="$(rustc --print sysroot)/lib/rustlib/x86_64-unknown-linux-gnu/bin/llvm-cov"
     "$llvm_cov" report "fuzz/target/x86_64-unknown-linux-gnu/coverage/x86_64-unknown-linux-gnu/release/$target" \
       -instr-profile="fuzz/coverage/$target/coverage.profdata" -ignore-filename-regex='/(\.cargo|rustc)/' |

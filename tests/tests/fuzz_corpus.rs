@@ -11,21 +11,35 @@ use std::path::{Path, PathBuf};
 #[allow(dead_code)]
 mod checks;
 
+/// The files in `directory` (from the repository's root) and its subfolders, as libFuzzer
+/// reads a corpus folder.
 fn inputs(directory: &str) -> Vec<PathBuf> {
-    let directory = Path::new(env!("CARGO_MANIFEST_DIR")).join("..").join(directory);
-    let mut files: Vec<PathBuf> = std::fs::read_dir(&directory)
-        .unwrap_or_else(|error| panic!("{}: {error}", directory.display()))
-        .map(|entry| entry.unwrap().path())
-        .filter(|path| path.is_file())
-        .collect();
+    fn walk(directory: &Path, files: &mut Vec<PathBuf>) {
+        for entry in std::fs::read_dir(directory).unwrap_or_else(|error| panic!("{}: {error}", directory.display())) {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                walk(&path, files);
+            } else if path.is_file() {
+                files.push(path);
+            }
+        }
+    }
+    let mut files = Vec::new();
+    walk(&Path::new(env!("CARGO_MANIFEST_DIR")).join("..").join(directory), &mut files);
     files.sort();
     files
+}
+
+/// A target's seeds, as scripts/fuzz.sh gives them: the project's scenes for the .mts
+/// targets, fuzz/corpus/decode for the decoders.
+fn seeds(target: &str) -> String {
+    if target == "decode" { "fuzz/corpus/decode".to_string() } else { "scenes".to_string() }
 }
 
 /// Runs `check` on every input of the target's corpus and regressions, naming a failing file.
 fn replay(target: &str, check: fn(&[u8])) -> usize {
     let mut count = 0;
-    for directory in [format!("fuzz/corpus/{target}"), format!("fuzz/regressions/{target}")] {
+    for directory in [seeds(target), format!("fuzz/regressions/{target}")] {
         for path in inputs(&directory) {
             let data = std::fs::read(&path).unwrap();
             if std::panic::catch_unwind(|| check(&data)).is_err() {

@@ -405,21 +405,6 @@ impl BlockerSet {
     pub fn words(self) -> [u32; 4] {
         self.words
     }
-
-    /// The members, smallest first.
-    pub fn iter(self) -> impl Iterator<Item = usize> {
-        self.words.into_iter().enumerate().flat_map(|(word_index, word)| {
-            let mut remaining = word;
-            core::iter::from_fn(move || {
-                if remaining == 0 {
-                    return None;
-                }
-                let index = 32 * word_index + remaining.trailing_zeros() as usize;
-                remaining &= remaining - 1;
-                Some(index)
-            })
-        })
-    }
 }
 
 /// Which objects may shadow which: `blockers[r]` gets `b` (for `b` < 128) when a shadow
