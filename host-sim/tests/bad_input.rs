@@ -37,13 +37,16 @@ fn scene_variant(kind: &SceneErrorKind) -> &'static str {
         SceneErrorKind::ZeroDirection => "ZeroDirection",
         SceneErrorKind::ObjectRequired { .. } => "ObjectRequired",
         SceneErrorKind::TooManyObjects { .. } => "TooManyObjects",
+        SceneErrorKind::TooManyLights { .. } => "TooManyLights",
+        SceneErrorKind::FeatureNotCompiled { .. } => "FeatureNotCompiled",
+        SceneErrorKind::NotYetSupported { .. } => "NotYetSupported",
         SceneErrorKind::SingularTransform => "SingularTransform",
         SceneErrorKind::PrimitiveNotCompiled { .. } => "PrimitiveNotCompiled",
         SceneErrorKind::OutOfRangeForNumberType { .. } => "OutOfRangeForNumberType",
     }
 }
 
-const SCENE_VARIANTS: [&str; 16] = [
+const SCENE_VARIANTS: [&str; 19] = [
     "InvalidUtf8",
     "UnknownKeyword",
     "WrongArgumentCount",
@@ -57,6 +60,9 @@ const SCENE_VARIANTS: [&str; 16] = [
     "ZeroDirection",
     "ObjectRequired",
     "TooManyObjects",
+    "TooManyLights",
+    "FeatureNotCompiled",
+    "NotYetSupported",
     "SingularTransform",
     "PrimitiveNotCompiled",
     "OutOfRangeForNumberType",
@@ -254,6 +260,16 @@ fn every_row_of_the_bad_input_table_gives_its_message_and_every_error_has_a_row(
                 let object = &description.objects[0];
                 assert!(Primitive::ALL.iter().all(|p| p.is_compiled()));
                 let error = SceneError::new(object.line, SceneErrorKind::PrimitiveNotCompiled { primitive: object.primitive.name() });
+                (error.to_string(), scene_variant(&error.kind).to_owned())
+            }
+            "library" if row.error == "FeatureNotCompiled" => {
+                // The host has the ray tree, so the input parses and prepares; the error is the
+                // one a build without the `ray-tree` feature gives for it.
+                let description = parse::<HOST_MAX_OBJECTS>(&row.input).unwrap();
+                let object = &description.objects[0];
+                assert!(object.material.reflect > 0.0);
+                assert!(Scene::<f64, HOST_MAX_OBJECTS>::prepare(&description).is_ok());
+                let error = SceneError::new(object.line, SceneErrorKind::FeatureNotCompiled { feature: "ray-tree", statement: "reflect" });
                 (error.to_string(), scene_variant(&error.kind).to_owned())
             }
             "library" => {

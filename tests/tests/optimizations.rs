@@ -174,6 +174,7 @@ fn random_scene(seed: u64) -> SceneDescription<CAPACITY> {
             pwr: rng.range(1.0, 50.0),
             rnd: rng.range(0.0, 2.0),
             cmy: [rng.unit(), rng.unit(), rng.unit()],
+            ..Material::default()
         };
         scene.objects.push(object).unwrap();
     }
@@ -216,6 +217,7 @@ fn eye_plane_scene(seed: u64) -> SceneDescription<CAPACITY> {
         pwr: rng.range(1.0, 50.0),
         rnd: rng.range(0.0, 2.0),
         cmy: [rng.unit(), rng.unit(), rng.unit()],
+        ..Material::default()
     };
     let push = |scene: &mut SceneDescription<CAPACITY>, primitive: Primitive, m: Matrix4, rng: &mut XorShift| {
         let mut object = ObjectDescription::new(primitive, scene.objects.len() as u32 + 1);

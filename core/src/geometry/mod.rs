@@ -2,6 +2,7 @@
 
 mod matrix;
 mod ray;
+pub mod reflection;
 mod transform;
 mod vector;
 

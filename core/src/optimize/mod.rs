@@ -6,6 +6,7 @@
 //! demand), [`projection`] (`projectvolume`), [`extents`], [`grid`], [`sortlist`],
 //! [`pixelbuffer`] (the fill) and [`shadow`].
 
+pub mod bounding_sphere;
 pub mod bounding_volume;
 pub mod capsule;
 pub mod extents;

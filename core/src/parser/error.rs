@@ -75,9 +75,9 @@ pub enum SceneErrorKind {
     InvalidUtf8,
     /// The first word of a statement is not a keyword of the format.
     UnknownKeyword { keyword: Token },
-    /// A statement has the wrong number of arguments. `expected` is the exact count, or the
-    /// minimum when `at_least` is set; `usage` shows the statement's form.
-    WrongArgumentCount { keyword: &'static str, expected: u8, at_least: bool, found: usize, usage: &'static str },
+    /// A statement has the wrong number of arguments: it takes from `fewest` to `most` (no
+    /// limit when `None`); `usage` shows the statement's form.
+    WrongArgumentCount { keyword: &'static str, fewest: u8, most: Option<u8>, found: usize, usage: &'static str },
     /// A word argument (`on`/`off`, an axis, a light type, ...) is not one of the allowed words.
     InvalidWord { keyword: &'static str, word: Token, expected: &'static str },
     /// A number argument does not follow the format's grammar
@@ -101,6 +101,13 @@ pub enum SceneErrorKind {
     ObjectRequired { keyword: &'static str },
     /// More objects than the build's capacity.
     TooManyObjects { capacity: usize },
+    /// More `light` statements than a scene may hold.
+    TooManyLights { capacity: usize },
+    /// The scene uses a feature (reflection, refraction, more lights, antialiasing) that this
+    /// build leaves out (scene preparation); `statement` names what asked for it.
+    FeatureNotCompiled { feature: &'static str, statement: &'static str },
+    /// A statement of the format that this version parses but cannot render yet.
+    NotYetSupported { statement: &'static str },
     /// An object's transform cannot be inverted: a `scale` with a zero factor (the line is the
     /// `scale` statement's) or a transform that became singular or non-finite (the line is
     /// the object's first line).
@@ -120,16 +127,17 @@ impl fmt::Display for SceneErrorKind {
         match self {
             Self::InvalidUtf8 => f.write_str("the statement is not valid UTF-8 text"),
             Self::UnknownKeyword { keyword } => write!(f, "unknown keyword {keyword}"),
-            Self::WrongArgumentCount { keyword, expected, at_least, found, usage } => {
+            Self::WrongArgumentCount { keyword, fewest, most, found, usage } => {
                 f.write_str("`")?;
                 f.write_str(keyword)?;
                 f.write_str("` takes ")?;
-                match (expected, at_least) {
-                    (0, false) => f.write_str("no arguments")?,
-                    (1, false) => f.write_str("1 argument")?,
-                    (n, false) => write!(f, "{n} arguments")?,
-                    (1, true) => f.write_str("at least 1 argument")?,
-                    (n, true) => write!(f, "at least {n} arguments")?,
+                match (fewest, most) {
+                    (0, Some(0)) => f.write_str("no arguments")?,
+                    (1, Some(1)) => f.write_str("1 argument")?,
+                    (n, Some(m)) if n == m => write!(f, "{n} arguments")?,
+                    (n, Some(m)) => write!(f, "{n} or {m} arguments")?,
+                    (1, None) => f.write_str("at least 1 argument")?,
+                    (n, None) => write!(f, "at least {n} arguments")?,
                 }
                 write!(f, " (`{usage}`), found {found}")
             }
@@ -161,6 +169,11 @@ impl fmt::Display for SceneErrorKind {
             Self::TooManyObjects { capacity } => {
                 write!(f, "too many objects: this build holds at most {capacity}")
             }
+            Self::TooManyLights { capacity } => write!(f, "too many lights: a scene holds at most {capacity}"),
+            Self::FeatureNotCompiled { feature, statement } => {
+                write!(f, "`{statement}` needs the `{feature}` feature, which this build leaves out")
+            }
+            Self::NotYetSupported { statement } => write!(f, "`{statement}` is not supported yet by this version of MicroTrace"),
             Self::SingularTransform => f.write_str("singular transform: the object's transform cannot be inverted"),
             Self::PrimitiveNotCompiled { primitive } => write!(f, "{primitive} is not compiled into this build"),
             Self::OutOfRangeForNumberType { what, number, value, limit } => {

@@ -46,7 +46,7 @@ mod tests;
 
 pub use error::{SceneError, SceneErrorKind, Token, TOKEN_EXCERPT_BYTES};
 
-use crate::scene::{Light, ObjectDescription, Optimizations, Primitive, Projection, SceneDescription, Viewport, Window};
+use crate::scene::{Antialias, Light, LightSource, ObjectDescription, Optimizations, Primitive, Projection, SceneDescription, Viewport, Window, MAX_DEPTH, MAX_LIGHTS};
 use crate::shading::Rgb4;
 
 /// The most arguments any fixed-arity statement takes (`group N R G B up`).
@@ -114,10 +114,15 @@ enum Keyword {
     Pwr,
     Rnd,
     Cmy,
+    Reflect,
+    Transmit,
+    Ior,
+    Depth,
+    Antialias,
 }
 
 impl Keyword {
-    const ALL: [Keyword; 26] = [
+    const ALL: [Keyword; 31] = [
         Keyword::Viewport,
         Keyword::Window,
         Keyword::Viewplane,
@@ -144,6 +149,11 @@ impl Keyword {
         Keyword::Pwr,
         Keyword::Rnd,
         Keyword::Cmy,
+        Keyword::Reflect,
+        Keyword::Transmit,
+        Keyword::Ior,
+        Keyword::Depth,
+        Keyword::Antialias,
     ];
 
     fn from_token(token: &str) -> Option<Self> {
@@ -175,38 +185,49 @@ impl Keyword {
             Keyword::Pwr => "pwr",
             Keyword::Rnd => "rnd",
             Keyword::Cmy => "cmy",
+            Keyword::Reflect => "reflect",
+            Keyword::Transmit => "transmit",
+            Keyword::Ior => "ior",
+            Keyword::Depth => "depth",
+            Keyword::Antialias => "antialias",
         }
     }
 
-    /// (argument count, whether it is a minimum, usage).
-    fn arity(self) -> (u8, bool, &'static str) {
+    /// (fewest arguments, most arguments (`None`: no limit), usage).
+    fn arity(self) -> (u8, Option<u8>, &'static str) {
+        let exactly = |count: u8, usage| (count, Some(count), usage);
         match self {
-            Keyword::Viewport => (4, false, "viewport X1 X2 Y1 Y2"),
-            Keyword::Window => (4, false, "window X1 X2 Y1 Y2"),
-            Keyword::Viewplane => (1, false, "viewplane D"),
-            Keyword::Perspective => (3, false, "perspective X Y Z"),
-            Keyword::Parallel => (3, false, "parallel DX DY DZ"),
-            Keyword::Light => (4, false, "light point X Y Z | light direction DX DY DZ"),
-            Keyword::Ambient => (1, false, "ambient A"),
-            Keyword::Background => (1, false, "background C"),
-            Keyword::Shadows => (1, false, "shadows on|off"),
-            Keyword::Dither => (1, false, "dither on|off"),
-            Keyword::Group => (5, false, "group N R G B up|down"),
-            Keyword::Optimize => (1, true, "optimize all|none|pixelbuffer extents grid sortlist"),
-            Keyword::Primitive(Primitive::Cube) => (0, false, "cube"),
-            Keyword::Primitive(Primitive::Sphere) => (0, false, "sphere"),
-            Keyword::Primitive(Primitive::Cylinder) => (0, false, "cylinder"),
-            Keyword::Primitive(Primitive::Cone) => (0, false, "cone"),
-            Keyword::Scale => (3, false, "scale SX SY SZ"),
-            Keyword::Rotate => (2, false, "rotate x|y|z DEG"),
-            Keyword::Translate => (3, false, "translate TX TY TZ"),
-            Keyword::Colour => (1, false, "colour N"),
-            Keyword::Ka => (1, false, "ka V"),
-            Keyword::Kd => (1, false, "kd V"),
-            Keyword::Ks => (1, false, "ks V"),
-            Keyword::Pwr => (1, false, "pwr V"),
-            Keyword::Rnd => (1, false, "rnd V"),
-            Keyword::Cmy => (3, false, "cmy C M Y"),
+            Keyword::Viewport => exactly(4, "viewport X1 X2 Y1 Y2"),
+            Keyword::Window => exactly(4, "window X1 X2 Y1 Y2"),
+            Keyword::Viewplane => exactly(1, "viewplane D"),
+            Keyword::Perspective => exactly(3, "perspective X Y Z"),
+            Keyword::Parallel => exactly(3, "parallel DX DY DZ"),
+            Keyword::Light => (4, Some(5), "light point X Y Z [I] | light direction DX DY DZ [I]"),
+            Keyword::Ambient => exactly(1, "ambient A"),
+            Keyword::Background => exactly(1, "background C"),
+            Keyword::Shadows => exactly(1, "shadows on|off"),
+            Keyword::Dither => exactly(1, "dither on|off"),
+            Keyword::Group => exactly(5, "group N R G B up|down"),
+            Keyword::Optimize => (1, None, "optimize all|none|pixelbuffer extents grid sortlist"),
+            Keyword::Primitive(Primitive::Cube) => exactly(0, "cube"),
+            Keyword::Primitive(Primitive::Sphere) => exactly(0, "sphere"),
+            Keyword::Primitive(Primitive::Cylinder) => exactly(0, "cylinder"),
+            Keyword::Primitive(Primitive::Cone) => exactly(0, "cone"),
+            Keyword::Scale => exactly(3, "scale SX SY SZ"),
+            Keyword::Rotate => exactly(2, "rotate x|y|z DEG"),
+            Keyword::Translate => exactly(3, "translate TX TY TZ"),
+            Keyword::Colour => exactly(1, "colour N"),
+            Keyword::Ka => exactly(1, "ka V"),
+            Keyword::Kd => exactly(1, "kd V"),
+            Keyword::Ks => exactly(1, "ks V"),
+            Keyword::Pwr => exactly(1, "pwr V"),
+            Keyword::Rnd => exactly(1, "rnd V"),
+            Keyword::Cmy => exactly(3, "cmy C M Y"),
+            Keyword::Reflect => exactly(1, "reflect R"),
+            Keyword::Transmit => exactly(1, "transmit T"),
+            Keyword::Ior => exactly(1, "ior N"),
+            Keyword::Depth => exactly(1, "depth N"),
+            Keyword::Antialias => (1, Some(2), "antialias off | antialias T [L]"),
         }
     }
 
@@ -224,6 +245,9 @@ impl Keyword {
                 | Keyword::Pwr
                 | Keyword::Rnd
                 | Keyword::Cmy
+                | Keyword::Reflect
+                | Keyword::Transmit
+                | Keyword::Ior
         )
     }
 }
@@ -345,13 +369,10 @@ fn statement<const MAX_OBJECTS: usize>(
         }
         found = found.saturating_add(1);
     }
-    let (expected, at_least, usage) = keyword.arity();
-    let count_ok = if at_least { found >= usize::from(expected) } else { found == usize::from(expected) };
+    let (fewest, most, usage) = keyword.arity();
+    let count_ok = found >= usize::from(fewest) && most.is_none_or(|most| found <= usize::from(most));
     if !count_ok {
-        return Err(SceneError::new(
-            line,
-            SceneErrorKind::WrongArgumentCount { keyword: keyword.name(), expected, at_least, found, usage },
-        ));
+        return Err(SceneError::new(line, SceneErrorKind::WrongArgumentCount { keyword: keyword.name(), fewest, most, found, usage }));
     }
     let s = Statement { line, keyword, args };
     match keyword {
@@ -402,11 +423,33 @@ fn statement<const MAX_OBJECTS: usize>(
             scene.lines.projection = line;
         }
         Keyword::Light => {
-            scene.light = match s.word(0, &["point", "direction"], "`point` or `direction`")? {
+            let light = match s.word(0, &["point", "direction"], "`point` or `direction`")? {
                 0 => Light::Point(s.vector(1, ["light point X", "light point Y", "light point Z"])?),
                 _ => Light::Direction(s.direction(1, ["light direction DX", "light direction DY", "light direction DZ"])?),
             };
-            scene.lines.light = line;
+            let intensity = if found == 5 { s.non_negative(4, "light I")? } else { 1.0 };
+            // The first statement replaces the default light; each later one adds a light.
+            if scene.lines.light == 0 {
+                scene.light = light;
+                scene.light_intensity = intensity;
+                scene.lines.light = line;
+            } else {
+                scene
+                    .more_lights
+                    .push(LightSource { light, intensity, line })
+                    .map_err(|_| s.error(SceneErrorKind::TooManyLights { capacity: MAX_LIGHTS }))?;
+            }
+        }
+        Keyword::Depth => scene.depth = s.integer(0, "depth", 1, i32::from(MAX_DEPTH))? as u8,
+        Keyword::Antialias => {
+            scene.antialias = if found == 1 && s.arg(0) == "off" {
+                None
+            } else {
+                let threshold = s.bounded(0, "antialias T", 0.0, 1.0, "from 0 to 1")?;
+                let levels = if found == 2 { s.integer(1, "antialias L", 1, 4)? as u8 } else { 2 };
+                Some(Antialias { threshold, levels })
+            };
+            scene.lines.antialias = line;
         }
         Keyword::Ambient => scene.ambient = s.non_negative(0, "ambient")?,
         Keyword::Background => scene.background = s.integer(0, "background", 0, 255)? as u8,
@@ -437,7 +480,10 @@ fn statement<const MAX_OBJECTS: usize>(
         | Keyword::Ks
         | Keyword::Pwr
         | Keyword::Rnd
-        | Keyword::Cmy => object_statement(&s, scene)?,
+        | Keyword::Cmy
+        | Keyword::Reflect
+        | Keyword::Transmit
+        | Keyword::Ior => object_statement(&s, scene)?,
     }
     Ok(())
 }
@@ -507,6 +553,9 @@ fn object_statement<const MAX_OBJECTS: usize>(
                 s.bounded(2, "cmy Y", 0.0, 1.0, "from 0 to 1")?,
             ];
         }
+        Keyword::Reflect => material.reflect = s.bounded(0, "reflect", 0.0, 1.0, "from 0 to 1")?,
+        Keyword::Transmit => material.transmit = s.bounded(0, "transmit", 0.0, 1.0, "from 0 to 1")?,
+        Keyword::Ior => material.ior = s.bounded(0, "ior", 0.1, 10.0, "from 0.1 to 10")?,
         _ => {}
     }
     Ok(())

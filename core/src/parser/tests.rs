@@ -170,7 +170,7 @@ fn a_new_object_has_the_getobject_defaults() {
         assert_eq!(object.world_from_object, crate::geometry::Matrix4::IDENTITY);
         assert_eq!(
             object.material,
-            Material { colour: 0, ka: 1.0, kd: 0.4, ks: 0.6, pwr: 20.0, rnd: 0.8, cmy: [0.3, 0.3, 0.3] }
+            Material { colour: 0, ka: 1.0, kd: 0.4, ks: 0.6, pwr: 20.0, rnd: 0.8, cmy: [0.3, 0.3, 0.3], reflect: 0.0, transmit: 0.0, ior: 1.0 }
         );
     }
 }
@@ -179,7 +179,7 @@ fn a_new_object_has_the_getobject_defaults() {
 fn object_statements_change_only_the_most_recent_object() {
     let scene = ok("sphere\ncolour 3\nka 0.5\nkd 0.25\nks 0\npwr 1000000\nrnd 0\ncmy 0 0.5 1\ncube\ncolour 15\n");
     let sphere = scene.objects[0].material;
-    assert_eq!(sphere, Material { colour: 3, ka: 0.5, kd: 0.25, ks: 0.0, pwr: 1.0e6, rnd: 0.0, cmy: [0.0, 0.5, 1.0] });
+    assert_eq!(sphere, Material { colour: 3, ka: 0.5, kd: 0.25, ks: 0.0, pwr: 1.0e6, rnd: 0.0, cmy: [0.0, 0.5, 1.0], reflect: 0.0, transmit: 0.0, ior: 1.0 });
     assert_eq!(scene.objects[1].material, Material { colour: 15, ..Material::default() });
 }
 
@@ -190,7 +190,10 @@ fn later_global_statements_override_earlier_ones_and_may_follow_objects() {
                     shadows on\nshadows off\ndither on\nviewplane -3\nviewplane 7.5e1\n");
     assert_eq!(scene.viewport, Viewport { x1: 1, x2: 2, y1: 3, y2: 4 });
     assert_eq!(scene.projection, Projection::Parallel { direction: [0.0, 1.0, 0.0] });
-    assert_eq!(scene.light, Light::Direction([0.0, 0.0, 2.0]));
+    // Lights add up (chapter 5): the first statement replaces the default, the next adds one.
+    assert_eq!(scene.light, Light::Point([1.0, 1.0, 1.0]));
+    assert_eq!(scene.more_lights.len(), 1);
+    assert_eq!((scene.more_lights[0].light, scene.more_lights[0].intensity, scene.more_lights[0].line), (Light::Direction([0.0, 0.0, 2.0]), 1.0, 7));
     assert_eq!(scene.ambient, 0.5);
     assert_eq!(scene.background, 255);
     assert!(!scene.shadows);
@@ -412,7 +415,11 @@ fn wrong_argument_counts() {
         ("viewplane", 1, &["`viewplane` takes 1 argument ", "found 0"]),
         ("perspective 1 2", 1, &["takes 3 arguments"]),
         ("parallel 1 2 3 4", 1, &["takes 3 arguments"]),
-        ("light point 1 2", 1, &["`light` takes 4 arguments", "found 3"]),
+        ("light point 1 2", 1, &["`light` takes 4 or 5 arguments", "found 3"]),
+        ("light point 1 2 3 4 5", 1, &["`light` takes 4 or 5 arguments", "found 6"]),
+        ("antialias 0.1 2 3", 1, &["`antialias` takes 1 or 2 arguments", "found 3"]),
+        ("depth", 1, &["`depth` takes 1 argument", "found 0"]),
+        ("sphere\nreflect", 2, &["`reflect` takes 1 argument", "found 0"]),
         ("light 1 2 3", 1, &["found 3"]),
         ("ambient 1 2", 1, &["takes 1 argument"]),
         ("background", 1, &["takes 1 argument"]),
@@ -607,4 +614,35 @@ fn exact_messages() {
     }
     assert!(err("viewplane .5").to_string().starts_with("line 1: viewplane D: malformed number `.5` (expected"));
     assert_eq!(err_bytes(b"\xff").to_string(), "line 1: the statement is not valid UTF-8 text");
+}
+
+#[test]
+fn chapter_five_statements_parse_with_their_defaults_and_ranges() {
+    let scene = ok("sphere\n reflect 0.7\n transmit 0.25\n ior 1.5\ncube\ndepth 3\nantialias 0.1 4\nlight point 1 2 3 0.5\nlight direction 0 1 0\nlight point 4 5 6 2\n");
+    let glass = scene.objects[0].material;
+    assert_eq!((glass.reflect, glass.transmit, glass.ior), (0.7, 0.25, 1.5));
+    let plain = scene.objects[1].material;
+    assert_eq!((plain.reflect, plain.transmit, plain.ior), (0.0, 0.0, 1.0));
+    assert_eq!(scene.depth, 3);
+    assert_eq!(scene.antialias, Some(Antialias { threshold: 0.1, levels: 4 }));
+    assert_eq!((scene.light, scene.light_intensity), (Light::Point([1.0, 2.0, 3.0]), 0.5));
+    assert_eq!(scene.more_lights.iter().map(|l| (l.light, l.intensity)).collect::<Vec<_>>(), [(Light::Direction([0.0, 1.0, 0.0]), 1.0), (Light::Point([4.0, 5.0, 6.0]), 2.0)]);
+    assert!(scene.uses_chapter_five());
+    let defaults = ok("sphere\n");
+    assert_eq!((defaults.depth, defaults.antialias, defaults.light_intensity, defaults.more_lights.len()), (5, None, 1.0, 0));
+    assert!(!defaults.uses_chapter_five());
+    assert_eq!(ok("antialias 0.2\nantialias off\n").antialias, None);
+    assert_eq!(ok("antialias 0.2\n").antialias, Some(Antialias { threshold: 0.2, levels: 2 }));
+
+    check("sphere\nreflect 1.5", 2, &["reflect: `1.5` is out of range (must be from 0 to 1)"]);
+    check("sphere\ntransmit -0.1", 2, &["transmit: `-0.1` is out of range (must be from 0 to 1)"]);
+    check("sphere\nior 0", 2, &["ior: `0` is out of range (must be from 0.1 to 10)"]);
+    check("reflect 0.5", 1, &["`reflect` changes the most recent object"]);
+    check("depth 0", 1, &["depth: `0` is out of range (must be an integer from 1 to 8)"]);
+    check("depth 2.5", 1, &["depth: expected an integer"]);
+    check("antialias 2", 1, &["antialias T: `2` is out of range (must be from 0 to 1)"]);
+    check("antialias 0.1 5", 1, &["antialias L: `5` is out of range (must be an integer from 1 to 4)"]);
+    check("antialias on", 1, &["antialias T: malformed number `on`"]);
+    check("light point 0 0 0 -1", 1, &["light I: `-1` is out of range (must be at least 0)"]);
+    check("light point 0 0 0\nlight point 0 0 0\nlight point 0 0 0\nlight point 0 0 0\nlight point 0 0 0", 5, &["too many lights: a scene holds at most 4"]);
 }

@@ -1,9 +1,15 @@
 //! The per-pixel driver (RTRACE.C `raycast`, PGADPEND.C `pgatrace`, `rgbtrace`) and the
 //! statistics of Table 4.2.
 
+mod lights;
 mod primary;
+#[cfg(feature = "ray-tree")]
+mod ray_tree;
+#[cfg(feature = "ray-tree")]
+mod secondary;
 mod shadow;
 mod statistics;
+mod surface;
 mod trace;
 
 pub use primary::{nearest_hit, nearest_hit_cached, NearestHit};

@@ -16,7 +16,7 @@ use super::Statistics;
 use crate::geometry::{Ray, Vector3};
 use crate::number::Number;
 use crate::optimize::shadow::{BlockerSet, DirectionChord, QuantizedDirection};
-use crate::scene::Scene;
+use crate::scene::{Scene, MAX_LIGHTS};
 #[cfg(test)]
 use crate::scene::PreparedLight;
 use crate::shapes::Interval;
@@ -44,6 +44,8 @@ pub struct ShadowCache {
     pub last_blocker: Option<u16>,
     /// The object the last primary ray hit (see `nearest_hit_cached`).
     pub last_hit: Option<u16>,
+    /// The last blocker of each further light's shadow rays.
+    pub more_blockers: [Option<u16>; MAX_LIGHTS - 1],
 }
 
 pub fn in_shadow<N: Number, const MAX_OBJECTS: usize>(
@@ -98,6 +100,83 @@ pub fn in_shadow_culled<N: Number, const MAX_OBJECTS: usize>(
     cache: &mut ShadowCache,
     culling: &ShadowCulling<'_, N>,
 ) -> bool {
+    blocked(scene, shaded_object, point, to_light, light_distance, statistics, &mut cache.last_blocker, culling)
+}
+
+/// The share of a light that reaches `point` on `shaded_object` (chapter 5): one when nothing
+/// blocks the shadow ray, zero when an opaque object does, else the product of the
+/// transparent blockers' `transmit` (shadow rays are not refracted, as the thesis says). In
+/// a scene without transparent objects, [`in_shadow_culled`]'s yes or no.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn light_share<N: Number, const MAX_OBJECTS: usize>(
+    scene: &Scene<N, MAX_OBJECTS>,
+    shaded_object: usize,
+    point: Vector3<N>,
+    to_light: Vector3<N>,
+    light_distance: N,
+    statistics: &mut Statistics,
+    last_blocker: &mut Option<u16>,
+    culling: &ShadowCulling<'_, N>,
+) -> N {
+    #[cfg(feature = "ray-tree")]
+    if scene.has_transparent_objects() {
+        return transmitted(scene, shaded_object, point, to_light, light_distance, statistics, culling);
+    }
+    if blocked(scene, shaded_object, point, to_light, light_distance, statistics, last_blocker, culling) { N::ZERO } else { N::ONE }
+}
+
+/// [`light_share`] with transparent objects: every candidate is tested (an opaque blocker
+/// ends the loop), in object order, so the product is the same whatever the optimizations.
+#[cfg(feature = "ray-tree")]
+fn transmitted<N: Number, const MAX_OBJECTS: usize>(
+    scene: &Scene<N, MAX_OBJECTS>,
+    shaded_object: usize,
+    point: Vector3<N>,
+    to_light: Vector3<N>,
+    light_distance: N,
+    statistics: &mut Statistics,
+    culling: &ShadowCulling<'_, N>,
+) -> N {
+    statistics.shadow_rays += 1;
+    let segment = ShadowSegment { ray: Ray { origin: point, direction: to_light }, interval: Interval::below(light_distance) };
+    let culls = scene.acceleration.culls_shadows();
+    let from_light = -to_light;
+    let quantized = if culling.light_cones.is_empty() { QuantizedDirection::default() } else { QuantizedDirection::floor(from_light) };
+    let set = culling.blockers.get(shaded_object).copied();
+    let mut share = N::ONE;
+    for index in 0..scene.objects.len() {
+        if index == shaded_object {
+            continue;
+        }
+        let meets = if culls {
+            let listed = set.is_none_or(|set| index >= BlockerSet::CAPACITY || set.contains(index));
+            listed && !culling.light_cones.get(index).is_some_and(|chord| chord.outside_box(quantized) || chord.excludes(from_light)) && segment.may_meet_and_meets(scene, index, statistics)
+        } else {
+            segment.meets(scene, index, statistics)
+        };
+        if meets {
+            share = share * scene.transmit(index);
+            if share == N::ZERO {
+                break;
+            }
+        }
+    }
+    share
+}
+
+/// Whether anything blocks the shadow ray (the thesis's `inshadow`), with the culling and
+/// `last_blocker` (the light's shadow cache, tried first and updated).
+#[allow(clippy::too_many_arguments)]
+fn blocked<N: Number, const MAX_OBJECTS: usize>(
+    scene: &Scene<N, MAX_OBJECTS>,
+    shaded_object: usize,
+    point: Vector3<N>,
+    to_light: Vector3<N>,
+    light_distance: N,
+    statistics: &mut Statistics,
+    last_blocker: &mut Option<u16>,
+    culling: &ShadowCulling<'_, N>,
+) -> bool {
     statistics.shadow_rays += 1;
     let segment = ShadowSegment { ray: Ray { origin: point, direction: to_light }, interval: Interval::below(light_distance) };
     if !scene.acceleration.culls_shadows() {
@@ -128,7 +207,7 @@ pub fn in_shadow_culled<N: Number, const MAX_OBJECTS: usize>(
     let set = culling.blockers.get(shaded_object).copied();
     let listed = |index: usize| set.is_none_or(|set| index >= BlockerSet::CAPACITY || set.contains(index));
     // The last blocker first (never the shaded object: it cannot block its own ray).
-    let first = cache.last_blocker.map(usize::from).filter(|index| *index != shaded_object && listed(*index));
+    let first = last_blocker.map(usize::from).filter(|index| *index != shaded_object && listed(*index));
     if let Some(index) = first {
         if blocks(scene, &segment, cones, (from_light, quantized), index, statistics) {
             return true;
@@ -142,7 +221,7 @@ pub fn in_shadow_culled<N: Number, const MAX_OBJECTS: usize>(
                 let index = 32 * word_index + remaining.trailing_zeros() as usize;
                 remaining &= remaining - 1;
                 if !skip(index) && blocks(scene, &segment, cones, (from_light, quantized), index, statistics) {
-                    cache.last_blocker = Some(index as u16);
+                    *last_blocker = Some(index as u16);
                     return true;
                 }
             }
@@ -151,7 +230,7 @@ pub fn in_shadow_culled<N: Number, const MAX_OBJECTS: usize>(
     let start = if set.is_some() { BlockerSet::CAPACITY } else { 0 };
     for index in start..scene.objects.len() {
         if !skip(index) && blocks(scene, &segment, cones, (from_light, quantized), index, statistics) {
-            cache.last_blocker = Some(index as u16);
+            *last_blocker = Some(index as u16);
             return true;
         }
     }

@@ -17,6 +17,18 @@ pub struct Statistics {
     pub shadow_rays: u64,
     /// Shadow ray–object tests.
     pub shadow_tests: u64,
+    /// The ray tree (chapter 5): secondary rays traced in each generation after the primary
+    /// (index 0: the rays spawned at primary hits).
+    pub secondary_rays: [u64; 7],
+    /// Secondary ray–object tests (after the bounding spheres).
+    pub secondary_tests: u64,
+}
+
+impl Statistics {
+    /// Secondary rays of every generation.
+    pub fn secondary_rays_total(&self) -> u64 {
+        self.secondary_rays.iter().sum()
+    }
 }
 
 impl Statistics {
@@ -28,5 +40,9 @@ impl Statistics {
         self.ro_hits += other.ro_hits;
         self.shadow_rays += other.shadow_rays;
         self.shadow_tests += other.shadow_tests;
+        for (mine, theirs) in self.secondary_rays.iter_mut().zip(other.secondary_rays) {
+            *mine += theirs;
+        }
+        self.secondary_tests += other.secondary_tests;
     }
 }

@@ -30,7 +30,7 @@ fn centre_pixel(description: &SceneDescription<4>) -> (u8, u8) {
 }
 
 fn matte(colour: u8, ka: f64, kd: f64, ks: f64, pwr: f64) -> Material {
-    Material { colour, ka, kd, ks, pwr, rnd: 0.0, cmy: [0.3; 3] }
+    Material { colour, ka, kd, ks, pwr, rnd: 0.0, cmy: [0.3; 3], ..Material::default() }
 }
 
 const SIXTY_DEGREES: [f64; 3] = [0.0, 0.866_025_403_784_438_6, 0.5];

@@ -119,13 +119,52 @@ pub struct Material {
     pub rnd: f64,
     /// Cyan, magenta, yellow reflection ratios (RGB mode).
     pub cmy: [f64; 3],
+    /// Reflection coefficient kr, 0..1 (chapter 5, `reflect`): the share of the reflected ray's
+    /// colour added to the local shade.
+    pub reflect: f64,
+    /// Transmission coefficient kt, 0..1 (`transmit`): the share of the refracted ray's colour,
+    /// and the share of a light that a shadow ray through the object passes.
+    pub transmit: f64,
+    /// Refractive index of the inside (`ior`), 0.1..10.
+    pub ior: f64,
 }
 
 impl Default for Material {
     fn default() -> Self {
-        Self { colour: 0, ka: 1.0, kd: 0.4, ks: 0.6, pwr: 20.0, rnd: 0.8, cmy: [0.3; 3] }
+        Self { colour: 0, ka: 1.0, kd: 0.4, ks: 0.6, pwr: 20.0, rnd: 0.8, cmy: [0.3; 3], reflect: 0.0, transmit: 0.0, ior: 1.0 }
     }
 }
+
+impl Material {
+    /// Whether rays leave this surface for more than the light (a mirror or a glass).
+    pub fn spawns_rays(&self) -> bool {
+        self.reflect > 0.0 || self.transmit > 0.0
+    }
+}
+
+/// How many lights a scene may have (chapter 5: each `light` statement adds one).
+pub const MAX_LIGHTS: usize = 4;
+
+/// A light beyond the first, with its intensity and the line that set it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LightSource {
+    pub light: Light,
+    pub intensity: f64,
+    pub line: u32,
+}
+
+/// Adaptive antialiasing (thesis fig 2.9): split a pixel whose corners differ by more than
+/// `threshold` (a fraction of full scale), down to `levels` splits.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Antialias {
+    pub threshold: f64,
+    pub levels: u8,
+}
+
+/// The ray tree's default depth (`depth`, scene format): primary rays and four generations.
+pub const DEFAULT_DEPTH: u8 = 5;
+/// The deepest tree the format allows.
+pub const MAX_DEPTH: u8 = 8;
 
 /// One object: a primitive instanced by a transform.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -153,7 +192,16 @@ pub struct SceneDescription<const MAX_OBJECTS: usize> {
     /// The view plane is z = `view_plane`.
     pub view_plane: f64,
     pub projection: Projection,
+    /// The first light (the thesis's only one).
     pub light: Light,
+    /// The first light's intensity (1 unless written).
+    pub light_intensity: f64,
+    /// Every further `light` statement's light, in order (chapter 5).
+    pub more_lights: Vec<LightSource, { MAX_LIGHTS - 1 }>,
+    /// The ray tree's maximum depth, 1..=[`MAX_DEPTH`]: 1 traces primary rays only.
+    pub depth: u8,
+    /// Adaptive antialiasing, when on.
+    pub antialias: Option<Antialias>,
     /// Ambient intensity Ia.
     pub ambient: f64,
     /// Background palette index.
@@ -169,14 +217,23 @@ pub struct SceneDescription<const MAX_OBJECTS: usize> {
     pub lines: SettingLines,
 }
 
-/// The line of the last `window`, `viewplane`, projection (`perspective` / `parallel`) and
-/// `light` statement of a scene, 0 where the default holds.
+/// The line of the last `window`, `viewplane` and projection (`perspective` / `parallel`)
+/// statement of a scene and of its first `light` statement, 0 where the default holds.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct SettingLines {
     pub window: u32,
     pub view_plane: u32,
     pub projection: u32,
     pub light: u32,
+    pub antialias: u32,
+}
+
+impl<const MAX_OBJECTS: usize> SceneDescription<MAX_OBJECTS> {
+    /// Whether the scene uses anything of chapter 5 (reflection, refraction, a second light or
+    /// an intensity, antialiasing): without, it renders exactly as the thesis's pipeline.
+    pub fn uses_chapter_five(&self) -> bool {
+        self.light_intensity != 1.0 || !self.more_lights.is_empty() || self.antialias.is_some() || self.objects.iter().any(|object| object.material.spawns_rays())
+    }
 }
 
 impl<const MAX_OBJECTS: usize> Default for SceneDescription<MAX_OBJECTS> {
@@ -188,6 +245,10 @@ impl<const MAX_OBJECTS: usize> Default for SceneDescription<MAX_OBJECTS> {
             view_plane: 500.0,
             projection: Projection::Parallel { direction: [0.0, 0.0, -1.0] },
             light: Light::Direction([1.0, 1.0, 1.0]),
+            light_intensity: 1.0,
+            more_lights: Vec::new(),
+            depth: DEFAULT_DEPTH,
+            antialias: None,
             ambient: 0.2,
             background: 113,
             shadows: false,

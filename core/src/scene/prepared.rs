@@ -10,10 +10,12 @@ use heapless::Vec;
 use crate::camera::Camera;
 use crate::geometry::{AffineTransform, Vector3};
 use crate::number::Number;
+#[cfg(feature = "ray-tree")]
+use crate::optimize::bounding_sphere::BoundingSphere;
 use crate::optimize::{Acceleration, Tuning};
 use crate::parser::{SceneError, SceneErrorKind};
 use crate::scene::range::{self, RayOrigins};
-use crate::scene::{Light, ObjectDescription, Optimizations, Primitive, SceneDescription, Viewport};
+use crate::scene::{Light, ObjectDescription, Optimizations, Primitive, SceneDescription, Viewport, MAX_LIGHTS};
 use crate::shading::{Palette, Rgb4, ShadingConstants};
 
 /// An object's surface constants in the number type.
@@ -51,11 +53,41 @@ pub enum PreparedLight<N> {
     Direction(Vector3<N>),
 }
 
+/// A light beyond the first, with its intensity.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PreparedLightSource<N> {
+    pub light: PreparedLight<N>,
+    pub intensity: N,
+}
+
+/// What an object does with the rays of the ray tree (chapter 5): the share it reflects, the
+/// share it transmits, and the refractive index of its inside.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Optics<N> {
+    pub reflect: N,
+    pub transmit: N,
+    pub ior: N,
+}
+
 #[derive(Debug, Clone)]
 pub struct Scene<N, const MAX_OBJECTS: usize> {
     pub objects: Vec<Object<N>, MAX_OBJECTS>,
     pub camera: Camera<N>,
+    /// The first light (the thesis's only one).
     pub light: PreparedLight<N>,
+    /// The first light's intensity; exactly one unless the scene wrote another, and then the
+    /// shading multiplies by it.
+    pub light_intensity: N,
+    /// The lights of later `light` statements (chapter 5).
+    pub more_lights: Vec<PreparedLightSource<N>, { MAX_LIGHTS - 1 }>,
+    /// The ray tree (chapter 5): the objects' optics, indexed like `objects`, empty when no
+    /// object reflects or transmits; and the tree's depth (1: primary rays only).
+    #[cfg(feature = "ray-tree")]
+    pub optics: Vec<Optics<N>, MAX_OBJECTS>,
+    /// The objects' world-space spheres for secondary rays, filled with `optics`.
+    #[cfg(feature = "ray-tree")]
+    pub spheres: Vec<BoundingSphere<N>, MAX_OBJECTS>,
+    pub depth: u8,
     pub constants: ShadingConstants<N>,
     pub background: u8,
     pub shadows: bool,
@@ -89,6 +121,13 @@ impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
         objects: Vec::new(),
         camera: Camera::UNSET,
         light: PreparedLight::Point(Vector3 { x: N::ZERO, y: N::ZERO, z: N::ZERO }),
+        light_intensity: N::ONE,
+        more_lights: Vec::new(),
+        #[cfg(feature = "ray-tree")]
+        optics: Vec::new(),
+        #[cfg(feature = "ray-tree")]
+        spheres: Vec::new(),
+        depth: 1,
         constants: ShadingConstants {
             fifteen: N::ZERO,
             brightest: N::ZERO,
@@ -116,6 +155,17 @@ impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
         let (camera, light) = Self::camera_and_light(description)?;
         self.camera = camera;
         self.light = light;
+        self.light_intensity = N::from_f64(description.light_intensity);
+        self.more_lights.clear();
+        for source in &description.more_lights {
+            let light = Self::prepared_light(source.light, source.line)?;
+            // Capacities are equal, so every light fits.
+            let _ = self.more_lights.push(PreparedLightSource { light, intensity: N::from_f64(source.intensity) });
+        }
+        self.depth = description.depth;
+        if description.antialias.is_some() {
+            return Err(SceneError { line: description.lines.antialias, kind: SceneErrorKind::NotYetSupported { statement: "antialias" } });
+        }
         self.constants = ShadingConstants::new(description.ambient);
         self.background = description.background;
         self.shadows = description.shadows;
@@ -130,17 +180,58 @@ impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
     ) -> Result<(Camera<N>, PreparedLight<N>), SceneError> {
         let camera = Camera::new(description.viewport, description.window, description.view_plane, description.projection)
             .ok_or(SceneError { line: description.lines.projection, kind: SceneErrorKind::ZeroDirection })?;
-        let light = match description.light {
+        Ok((camera, Self::prepared_light(description.light, description.lines.light)?))
+    }
+
+    /// A light in the number type; a direction is normalised (`line`: where it was written).
+    fn prepared_light(light: Light, line: u32) -> Result<PreparedLight<N>, SceneError> {
+        Ok(match light {
             Light::Point(position) => PreparedLight::Point(Vector3::from_f64(position)),
             Light::Direction(direction) => {
                 let length = libm::sqrt(direction.iter().map(|c| c * c).sum::<f64>());
                 if length == 0.0 || !length.is_finite() {
-                    return Err(SceneError { line: description.lines.light, kind: SceneErrorKind::ZeroDirection });
+                    return Err(SceneError { line, kind: SceneErrorKind::ZeroDirection });
                 }
                 PreparedLight::Direction(Vector3::from_f64(direction.map(|c| c / length)))
             }
-        };
-        Ok((camera, light))
+        })
+    }
+
+    /// All lights with their intensities, the first first.
+    pub fn lights(&self) -> impl Iterator<Item = PreparedLightSource<N>> + '_ {
+        core::iter::once(PreparedLightSource { light: self.light, intensity: self.light_intensity }).chain(self.more_lights.iter().copied())
+    }
+
+    /// Whether some object lets light through (so shadow rays measure a share, not a yes/no).
+    #[cfg(feature = "ray-tree")]
+    pub fn has_transparent_objects(&self) -> bool {
+        self.optics.iter().any(|optics| optics.transmit > N::ZERO)
+    }
+
+    /// The object's optics (none: a plain thesis surface).
+    #[cfg(feature = "ray-tree")]
+    pub fn optics(&self, index: usize) -> Optics<N> {
+        self.optics.get(index).copied().unwrap_or(Optics { reflect: N::ZERO, transmit: N::ZERO, ior: N::ONE })
+    }
+
+    /// The object's sphere for secondary rays.
+    #[cfg(feature = "ray-tree")]
+    pub fn bounding_sphere(&self, index: usize) -> BoundingSphere<N> {
+        self.spheres.get(index).copied().unwrap_or(BoundingSphere::EVERYWHERE)
+    }
+
+    /// The share of light the object passes (0 for an opaque one).
+    #[cfg(feature = "ray-tree")]
+    pub fn transmit(&self, index: usize) -> N {
+        self.optics(index).transmit
+    }
+
+    /// Whether any object reflects or transmits (so pixels may need the ray tree).
+    pub fn has_ray_tree(&self) -> bool {
+        #[cfg(feature = "ray-tree")]
+        return self.depth > 1 && !self.optics.is_empty();
+        #[cfg(not(feature = "ray-tree"))]
+        false
     }
 
     /// Prepares the objects into `self.objects` and builds the acceleration structures, in place.
@@ -153,6 +244,12 @@ impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
         let origins = RayOrigins::of(description, descriptions);
         let objects = &mut self.objects;
         objects.clear();
+        #[cfg(feature = "ray-tree")]
+        let spawns_rays = descriptions.iter().any(|object| object.material.spawns_rays());
+        #[cfg(feature = "ray-tree")]
+        self.optics.clear();
+        #[cfg(feature = "ray-tree")]
+        self.spheres.clear();
         for object in descriptions {
             let error = |kind| SceneError { line: object.line, kind };
             if !object.primitive.is_compiled() {
@@ -177,6 +274,20 @@ impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
                 },
             };
             objects.push(prepared).map_err(|_| error(SceneErrorKind::TooManyObjects { capacity: MAX_OBJECTS }))?;
+            #[cfg(feature = "ray-tree")]
+            if spawns_rays {
+                self.optics
+                    .push(Optics { reflect: N::from_f64(material.reflect), transmit: N::from_f64(material.transmit), ior: N::from_f64(material.ior) })
+                    .map_err(|_| error(SceneErrorKind::TooManyObjects { capacity: MAX_OBJECTS }))?;
+                self.spheres
+                    .push(BoundingSphere::of(object.primitive, &object.world_from_object))
+                    .map_err(|_| error(SceneErrorKind::TooManyObjects { capacity: MAX_OBJECTS }))?;
+            }
+            #[cfg(not(feature = "ray-tree"))]
+            if material.spawns_rays() {
+                let statement = if material.reflect > 0.0 { "reflect" } else { "transmit" };
+                return Err(error(SceneErrorKind::FeatureNotCompiled { feature: "ray-tree", statement }));
+            }
         }
         self.acceleration.rebuild(&self.camera, description.optimizations, descriptions, Tuning::IMPROVED);
         Ok(())

@@ -58,6 +58,20 @@ impl Palette {
         self.entries[index as usize]
     }
 
+    /// The entry nearest to an RGB colour (squared distance in 8-bit channels, ties to the
+    /// lower index): how a PGA pixel mixed by the ray tree or antialiasing gets its index
+    /// (scene format, chapter 5).
+    pub fn nearest(&self, colour: [u8; 3]) -> u8 {
+        let mut best = (u32::MAX, 0u8);
+        for (index, entry) in (0..=255u8).zip(self.entries.iter()) {
+            let distance: u32 = entry.to_rgb888().iter().zip(colour).map(|(a, b)| u32::from(a.abs_diff(b)).pow(2)).sum();
+            if distance < best.0 {
+                best = (distance, index);
+            }
+        }
+        best.1
+    }
+
     /// `generatergbup(group, r, g, b)`: shade i = round(i·(r,g,b)/max(r,g,b)), walking from
     /// black through the cell so that the largest channel reaches 15 at shade 15.
     /// The thesis did nothing for (0,0,0); we make the group black.

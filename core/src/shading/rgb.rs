@@ -19,11 +19,17 @@ pub fn rgb_pixel<N: Number>(
     dither: bool,
     pixel: PixelPosition,
 ) -> Rgb888 {
+    rgb_quantized(rgb_intensity(material, light, constants), constants, dither, pixel)
+}
+
+/// The three channels' intensities on a 0..255 scale, before clamping and rounding.
+pub fn rgb_intensity<N: Number>(material: &PreparedMaterial<N>, light: Lighting<N>, constants: &ShadingConstants<N>) -> [N; 3] {
     let specular = material.ks * light.specular;
     let diffuse = material.kd * light.diffuse + material.ka * constants.ambient;
-    core::array::from_fn(|channel| {
-        let reflectance = material.reflectance[channel];
-        let intensity = constants.full_rgb * (diffuse * reflectance + specular);
-        constants.quantize(intensity, constants.brightest_rgb, dither, pixel).clamp(0, 255) as u8
-    })
+    core::array::from_fn(|channel| constants.full_rgb * (diffuse * material.reflectance[channel] + specular))
+}
+
+/// Intensities clamped to [0, 254.9] and rounded or dithered to bytes.
+pub fn rgb_quantized<N: Number>(intensity: [N; 3], constants: &ShadingConstants<N>, dither: bool, pixel: PixelPosition) -> Rgb888 {
+    intensity.map(|channel| constants.quantize(channel, constants.brightest_rgb, dither, pixel).clamp(0, 255) as u8)
 }

@@ -166,7 +166,7 @@ pub fn statistics_table(rendered: &Rendered) -> String {
     let s = &rendered.statistics;
     let percent = |part: u64, whole: u64| if whole == 0 { 0.0 } else { 100.0 * part as f64 / whole as f64 };
     let per = |part: u64, whole: u64| if whole == 0 { 0.0 } else { part as f64 / whole as f64 };
-    format!(
+    let mut table = format!(
         "pixels            {}\n\
          rays traced       {:.2}%\n\
          rays intersected  {:.2}%\n\
@@ -174,9 +174,7 @@ pub fn statistics_table(rendered: &Rendered) -> String {
          % hits            {:.2}%\n\
          total R-O tests   {}\n\
          shadow rays       {}\n\
-         shadow tests      {} ({:.2} per shadow ray)\n\
-         preprocess        {:.1} ms\n\
-         trace             {:.1} ms\n",
+         shadow tests      {} ({:.2} per shadow ray)\n",
         s.pixels,
         percent(s.rays_traced, s.pixels),
         percent(s.rays_intersected, s.rays_traced),
@@ -186,7 +184,24 @@ pub fn statistics_table(rendered: &Rendered) -> String {
         s.shadow_rays,
         s.shadow_tests,
         per(s.shadow_tests, s.shadow_rays),
+    );
+    // The ray tree (chapter 5), when the scene has one.
+    let secondary = s.secondary_rays_total();
+    if secondary > 0 {
+        let generations: Vec<String> = s.secondary_rays.iter().take_while(|count| **count > 0).map(u64::to_string).collect();
+        table.push_str(&format!(
+            "secondary rays    {secondary} (by generation after the primary: {})\n\
+             secondary tests   {} ({:.2} per secondary ray)\n",
+            generations.join(", "),
+            s.secondary_tests,
+            per(s.secondary_tests, secondary),
+        ));
+    }
+    table.push_str(&format!(
+        "preprocess        {:.1} ms\n\
+         trace             {:.1} ms\n",
         rendered.preprocess.as_secs_f64() * 1e3,
         rendered.trace.as_secs_f64() * 1e3,
-    )
+    ));
+    table
 }

@@ -1,0 +1,80 @@
+//! The local term at a hit (digest §6.2, and the thesis's chapter 5 for several lights): the
+//! diffuse and specular parts summed over the lights, each times its intensity and the share of
+//! it that reaches the point (a shadow ray per light).
+//!
+//! With one light of intensity one and opaque objects this is the thesis's shading exactly:
+//! no multiplication by the intensity or the share is made.
+
+use super::shadow::{light_share, ShadowCache, ShadowCulling};
+use super::Statistics;
+use crate::geometry::Vector3;
+use crate::number::Number;
+use crate::scene::{PreparedLight, Scene};
+use crate::shading::{lighting, Lighting};
+
+/// The lighting at `point` on object `object` with the unit `normal` facing the incoming ray
+/// `view`; `start` is where shadow rays leave (the point moved off the surface).
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn direct_lighting<N: Number, const MAX_OBJECTS: usize>(
+    scene: &Scene<N, MAX_OBJECTS>,
+    object: usize,
+    point: Vector3<N>,
+    normal: Vector3<N>,
+    view: Vector3<N>,
+    power: u32,
+    statistics: &mut Statistics,
+    cache: &mut ShadowCache,
+    culling: &[ShadowCulling<'_, N>],
+) -> Lighting<N> {
+    let none = ShadowCulling::default();
+    let at = Hit { scene, object, point, normal, view, power };
+    let mut total = at.one_light(scene.light, statistics, &mut cache.last_blocker, culling.first().unwrap_or(&none));
+    if scene.light_intensity != N::ONE {
+        total = scaled(total, scene.light_intensity);
+    }
+    for ((source, last_blocker), index) in scene.more_lights.iter().zip(cache.more_blockers.iter_mut()).zip(1..) {
+        let term = scaled(at.one_light(source.light, statistics, last_blocker, culling.get(index).unwrap_or(&none)), source.intensity);
+        total = Lighting { diffuse: total.diffuse + term.diffuse, specular: total.specular + term.specular };
+    }
+    total
+}
+
+fn scaled<N: Number>(lighting: Lighting<N>, factor: N) -> Lighting<N> {
+    Lighting { diffuse: lighting.diffuse * factor, specular: lighting.specular * factor }
+}
+
+/// What every light's term at one hit shares.
+struct Hit<'a, N, const MAX_OBJECTS: usize> {
+    scene: &'a Scene<N, MAX_OBJECTS>,
+    object: usize,
+    point: Vector3<N>,
+    normal: Vector3<N>,
+    view: Vector3<N>,
+    power: u32,
+}
+
+impl<N: Number, const MAX_OBJECTS: usize> Hit<'_, N, MAX_OBJECTS> {
+    /// One light's diffuse and specular at the hit, times the share that reaches it.
+    fn one_light(&self, light: PreparedLight<N>, statistics: &mut Statistics, last_blocker: &mut Option<u16>, culling: &ShadowCulling<'_, N>) -> Lighting<N> {
+        let (to_light, light_distance) = match light {
+            PreparedLight::Point(position) => {
+                let offset = position - self.point;
+                let distance = offset.length();
+                // As `normalized()`, without computing the length twice.
+                let direction = N::ONE.checked_div(distance).map_or(self.normal, |reciprocal| offset * reciprocal);
+                (direction, distance)
+            }
+            PreparedLight::Direction(direction) => (direction, N::MAX),
+        };
+        // A surface facing away from the light is unlit with or without a shadow ray.
+        let faces_light = self.normal.dot(to_light) > N::ZERO;
+        let share = if self.scene.shadows && faces_light {
+            let start = super::shadow_origin(self.point, self.normal);
+            light_share(self.scene, self.object, start, to_light, light_distance, statistics, last_blocker, culling)
+        } else {
+            N::ONE
+        };
+        let lit = lighting(self.normal, to_light, self.view, self.power, share == N::ZERO);
+        if share == N::ONE || share == N::ZERO { lit } else { scaled(lit, share) }
+    }
+}
