@@ -3,7 +3,8 @@
 //!   (`MICROTRACE_FAULT_TEST=1`, `cargo xtask firmware --provoke`), end the QEMU run with exit
 //!   status 1 and the firmware's message naming what happened, well before the timeout;
 //! - the stack lies below the statics (flip-link), from the start of RAM, so an overflow runs
-//!   off RAM (where the MPU faults) and never through the prepared scene;
+//!   off RAM (where the MPU faults) and never through the prepared scene; a real scene that
+//!   leaves too little stack (the build's stack reserve set to 0) stops with "stack overflow";
 //! - a scene too large for the chip's RAM fails at build time with the RAM it needs, part by
 //!   part, and the board's RAM, not with rust-lld's `will not fit in region 'RAM'`;
 //! - a scene with more objects than the build's capacity fails, naming the file, the line and
@@ -187,6 +188,40 @@ fn a_scene_too_large_for_the_lm3s6965evb_fails_at_build_time() {
 #[test]
 fn a_scene_too_large_for_the_mps2_an386_fails_at_build_time() {
     a_scene_too_large_fails_at_build_time(Board::Mps2An386);
+}
+
+/// A real scene whose statics leave too little stack (the RAM check's reserve set to 0): the
+/// stack overflows inside the render's preparation, where a frame of a few KB jumps past the
+/// bottom of RAM at once (a guard of a few words would miss it), and the run says so. On the
+/// lm3s6965evb this is what used to hang until the timeout.
+fn a_scene_that_overflows_its_stack_says_so(board: Board, objects: usize) {
+    let scene = many_spheres(objects);
+    let out = work_dir(&format!("{}-overflowing-{objects}", board.name()));
+    let mut options = FirmwareOptions::new(&scene, board, "f32", &out);
+    options.stack_reserve = Some(0);
+    options.timeout = Duration::from_secs(60);
+    let error = firmware::run(&options).unwrap_err();
+    let context = format!("{} with {objects} spheres: {error}", board.name());
+    println!("{context}");
+    assert!(error.contains("the firmware failed (exit status: 1); QEMU's output:"), "{context}");
+    assert!(error.contains("microtrace: stack overflow: the stack grew below its bottom, the start of RAM at 0x20000000"), "{context}");
+    let elf = std::fs::read(out.join("firmware.elf")).unwrap();
+    let size = symbol(&elf, "_stack_start") - symbol(&elf, "_stack_end");
+    // Less than the 12 KB the check reserves by default, more than a few frames.
+    assert!((1024..12 * 1024).contains(&size), "{context}: a stack of {size} bytes");
+    assert!(error.contains(&format!("; it has {} bytes,", grouped(size))), "{context}");
+    stack_is_below_the_statics(&elf, board);
+}
+
+#[test]
+fn a_scene_that_overflows_its_stack_on_lm3s6965evb_says_so() {
+    a_scene_that_overflows_its_stack_says_so(Board::Lm3s6965evb, 119);
+}
+
+#[test]
+fn a_scene_that_overflows_its_stack_on_mps2_an386_says_so() {
+    // No OLED copy: ten more spheres leave the same stack.
+    a_scene_that_overflows_its_stack_says_so(Board::Mps2An386, 129);
 }
 
 /// One object more than the build's capacity: xtask (which parses the scene first) and

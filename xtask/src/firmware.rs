@@ -120,6 +120,9 @@ pub struct FirmwareOptions {
     pub timeout: Duration,
     /// Build the fault test and provoke this fault (the run then fails, saying what happened).
     pub provoke: Option<Fault>,
+    /// The stack the build's RAM check keeps free (`MICROTRACE_STACK_RESERVE`; firmware/src/ram.rs),
+    /// when not its default of 12 KB.
+    pub stack_reserve: Option<u32>,
 }
 
 impl FirmwareOptions {
@@ -133,6 +136,7 @@ impl FirmwareOptions {
             out: out.into(),
             timeout: Duration::from_secs(300),
             provoke: None,
+            stack_reserve: None,
         }
     }
 }
@@ -341,6 +345,7 @@ fn build(options: &FirmwareOptions, scene: &Path, primitive_features: &[&str]) -
         .env("MICROTRACE_OPT", &options.optimizations)
         .env("MICROTRACE_SIZE", "128x64")
         .env("MICROTRACE_FAULT_TEST", if options.provoke.is_some() { "1" } else { "0" })
+        .env("MICROTRACE_STACK_RESERVE", options.stack_reserve.map(|bytes| bytes.to_string()).unwrap_or_default())
         .stdin(Stdio::null())
         .output()
         .map_err(|error| format!("cannot run cargo: {error}"))?;

@@ -10,11 +10,13 @@ fn usage() -> &'static str {
     "usage:
   cargo xtask firmware [--scene FILE] [--board lm3s6965evb|mps2-an386] [--number f64|f32|fixed|fixed16|f32-micromath|soft32]
                        [--opt scene|all|none|pixelbuffer,extents,grid,sortlist] [--out DIR]
-                       [--timeout SECONDS] [--provoke panic|hard-fault|unexpected-interrupt|stack-overflow]
+                       [--timeout SECONDS] [--stack-reserve BYTES]
+                       [--provoke panic|hard-fault|unexpected-interrupt|stack-overflow]
       Builds the firmware for the scene (default scenes/snooker.mts), runs it under QEMU and
       leaves framebuffer.bin, oled.png (lm3s6965evb) and report.json in DIR
       (default firmware/target/run/BOARD-SCENE-NUMBER). --provoke builds the fault test, which
       does that before preparing the scene: the run fails with the firmware's message.
+      --stack-reserve: the stack the build's RAM check keeps free (default 12288).
   cargo xtask firmware-example
       Builds (does not run) the real-board examples in firmware/examples/
       (Raspberry Pi Pico + SSD1306, Raspberry Pi Pico + ST7789).
@@ -81,6 +83,7 @@ fn firmware_task(arguments: &[String]) -> Result<(), String> {
     let mut out: Option<PathBuf> = None;
     let mut timeout = Duration::from_secs(300);
     let mut provoke = None;
+    let mut stack_reserve = None;
     let mut rest = arguments.iter();
     while let Some(flag) = rest.next() {
         let mut value = || rest.next().cloned().ok_or_else(|| format!("{flag} needs a value\n{}", usage()));
@@ -96,6 +99,10 @@ fn firmware_task(arguments: &[String]) -> Result<(), String> {
             "--timeout" => {
                 let seconds = value()?;
                 timeout = Duration::from_secs(seconds.parse().map_err(|_| format!("--timeout {seconds}: not a number of seconds"))?);
+            }
+            "--stack-reserve" => {
+                let bytes = value()?;
+                stack_reserve = Some(bytes.parse().map_err(|_| format!("--stack-reserve {bytes}: not a number of bytes"))?);
             }
             "--provoke" => {
                 let name = value()?;
@@ -116,6 +123,7 @@ fn firmware_task(arguments: &[String]) -> Result<(), String> {
     options.optimizations = optimizations;
     options.timeout = timeout;
     options.provoke = provoke;
+    options.stack_reserve = stack_reserve;
     let run = firmware::run(&options)?;
     println!("{}", firmware::summary(&run, &options));
     Ok(())
