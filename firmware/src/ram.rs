@@ -3,9 +3,9 @@
 //! needs and what the board has, e.g.
 //!
 //! ```text
-//! error[E0080]: evaluation panicked: /…/shells130.mts: needs 80,146 bytes of RAM (the prepared
-//! scene 55,570 for 130 objects in f32, framebuffer 8,192 for 128x64, display copy 4,096,
-//! stack reserve 12,288), the lm3s6965evb has 65,536
+//! error[E0080]: evaluation panicked: /…/many-130.mts: needs 79,648 bytes of RAM (the prepared
+//! scene 55,072 for 130 objects in f32, framebuffer 8,192 for 128x64, display copy 4,096, stack
+//! reserve 12,288), the lm3s6965evb has 65,536 (firmware/README.md, "When it fails")
 //! ```
 //!
 //! instead of rust-lld's `section '.bss' will not fit in region 'RAM'` (or, worse, a build that
