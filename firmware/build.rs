@@ -13,6 +13,18 @@
 //! - `MICROTRACE_SIZE`: `WIDTHxHEIGHT` of the render (default `128x64`, the OLED).
 //! - `MICROTRACE_OPT`: `scene` (default: keep the scene's `optimize`), `all`, `none`, or a comma
 //!   list of `pixelbuffer,extents,grid,sortlist`.
+//! - `MICROTRACE_STACK_RESERVE`: the bytes of stack the RAM check keeps free (default 12288, the
+//!   budget's peak stack; src/ram.rs). Smaller lets a larger scene build; its stack may then
+//!   overflow, which the firmware reports (src/fault.rs).
+//! - `MICROTRACE_FAULT_TEST`: `1` builds the fault test (`cfg(microtrace_fault_test)`, src/fault.rs):
+//!   the firmware then panics, hard-faults, takes an unexpected interrupt or overflows its stack
+//!   when the host has a file `provoke-panic`, `provoke-hard-fault`,
+//!   `provoke-unexpected-interrupt` or `provoke-stack-overflow` (`cargo xtask firmware
+//!   --provoke`). Never set for a normal build, which links no panic path.
+//!
+//! The board's RAM and flash (origin and length, from its `memory.x`) go into `scene.rs` too:
+//! src/ram.rs checks at compile time that the scene fits the RAM (a scene too large fails the
+//! build with its size, before the linker could), src/fault.rs sets the MPU's regions from them.
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -22,19 +34,29 @@ use microtrace::scene::{Optimizations, Primitive, SceneDescription};
 /// Objects a scene file may hold at build time; the firmware itself is sized by the scene.
 const PARSE_CAPACITY: usize = 512;
 
+/// The stack the RAM check keeps free by default: the memory budget's peak stack, 12 KB
+/// (firmware/README.md; the deepest measured, the lattice in f64 on the mps2-an386, is 11,060).
+const DEFAULT_STACK_RESERVE: u32 = 12 * 1024;
+
 fn main() {
     let manifest_dir = PathBuf::from(env("CARGO_MANIFEST_DIR").unwrap());
     let out_dir = PathBuf::from(env("OUT_DIR").unwrap());
 
     let board = select_board();
-    copy_memory_layout(&manifest_dir, &out_dir, board);
+    let memory = copy_memory_layout(&manifest_dir, &out_dir, board);
 
     let scene_path = env("MICROTRACE_SCENE")
         .map(PathBuf::from)
         .unwrap_or_else(|| manifest_dir.join("../scenes/snooker.mts"));
     println!("cargo:rerun-if-changed={}", scene_path.display());
-    for name in ["MICROTRACE_SCENE", "MICROTRACE_NUMBER", "MICROTRACE_SIZE", "MICROTRACE_OPT"] {
+    for name in ["MICROTRACE_SCENE", "MICROTRACE_NUMBER", "MICROTRACE_SIZE", "MICROTRACE_OPT", "MICROTRACE_FAULT_TEST", "MICROTRACE_STACK_RESERVE"] {
         println!("cargo:rerun-if-env-changed={name}");
+    }
+    println!("cargo:rustc-check-cfg=cfg(microtrace_fault_test)");
+    match env("MICROTRACE_FAULT_TEST").as_deref() {
+        None | Some("0") => {}
+        Some("1") => println!("cargo:rustc-cfg=microtrace_fault_test"),
+        Some(other) => fail(&format!("MICROTRACE_FAULT_TEST={other}: expected 1 (the fault test) or 0")),
     }
 
     let number_name = env("MICROTRACE_NUMBER").unwrap_or_else(|| "f32".into());
@@ -43,8 +65,13 @@ fn main() {
 
     let text = std::fs::read(&scene_path)
         .unwrap_or_else(|error| fail(&format!("cannot read the scene {}: {error}", scene_path.display())));
-    let mut description = microtrace::parser::parse::<PARSE_CAPACITY>(&text)
-        .unwrap_or_else(|error| fail(&format!("{}: {error}", scene_path.display())));
+    let mut description = microtrace::parser::parse::<PARSE_CAPACITY>(&text).unwrap_or_else(|error| match error.kind {
+        microtrace::parser::SceneErrorKind::TooManyObjects { .. } => fail(&format!(
+            "{} objects at build time (PARSE_CAPACITY in firmware/build.rs); no board this firmware runs on has the RAM for so many",
+            in_file(&scene_path, &error)
+        )),
+        _ => fail(&in_file(&scene_path, &error)),
+    });
     description.fit_to_size(width, height);
     if let Some(optimizations) = optimization_override(env("MICROTRACE_OPT").as_deref()) {
         description.optimizations = optimizations;
@@ -52,6 +79,13 @@ fn main() {
     check_primitives(&description, &scene_path);
 
     let mut source = generate(&description, &scene_path, number, &number_name, board);
+    memory.write(&mut source);
+    let reserve = env("MICROTRACE_STACK_RESERVE").map_or(Ok(DEFAULT_STACK_RESERVE), |text| text.parse::<u32>());
+    let Ok(reserve) = reserve else {
+        fail("MICROTRACE_STACK_RESERVE: expected a number of bytes, e.g. 12288")
+    };
+    writeln!(source, "/// The stack the RAM check keeps free (`MICROTRACE_STACK_RESERVE`, src/ram.rs).").unwrap();
+    writeln!(source, "pub const STACK_RESERVE_BYTES: usize = {reserve};").unwrap();
     // The scene prepared ahead in the number type: what the chip starts from (no f64 there).
     let vsqrt = number.contains("VsqrtF32");
     let written = match number_name.as_str() {
@@ -65,13 +99,32 @@ fn main() {
         other => fail(&format!("MICROTRACE_NUMBER={other}: no preparation ahead for it")),
     };
     if let Err(error) = written {
-        fail(&format!("{}: {error}", scene_path.display()));
+        fail(&match error {
+            Ahead::Scene(error) => in_file(&scene_path, &error),
+            Ahead::Write(error) => format!("{}: writing the scene prepared ahead: {error}", scene_path.display()),
+        });
     }
     std::fs::write(out_dir.join("scene.rs"), source).unwrap();
 }
 
 fn env(name: &str) -> Option<String> {
     std::env::var(name).ok().filter(|value| !value.is_empty())
+}
+
+/// A scene error in the one format of every scene error (docs/bad-input.md): `FILE:line N:
+/// reason`, or `FILE: reason` for an error tied to no line.
+fn in_file(path: &Path, error: &microtrace::parser::SceneError) -> String {
+    if error.line == 0 {
+        format!("{}: {error}", path.display())
+    } else {
+        format!("{}:{error}", path.display())
+    }
+}
+
+/// Why the scene could not be prepared ahead.
+enum Ahead {
+    Scene(microtrace::parser::SceneError),
+    Write(std::fmt::Error),
 }
 
 /// Stops the build with `message` (cargo shows a failed build script's stderr).
@@ -105,7 +158,7 @@ fn select_board() -> Board {
     }
 }
 
-fn copy_memory_layout(manifest_dir: &Path, out_dir: &Path, board: Board) {
+fn copy_memory_layout(manifest_dir: &Path, out_dir: &Path, board: Board) -> Memory {
     let source = match board {
         // The repository root's memory.x describes the default board.
         Board::Lm3s6965evb => manifest_dir.join("../memory.x"),
@@ -115,6 +168,57 @@ fn copy_memory_layout(manifest_dir: &Path, out_dir: &Path, board: Board) {
     std::fs::copy(&source, out_dir.join("memory.x"))
         .unwrap_or_else(|error| fail(&format!("cannot copy {}: {error}", source.display())));
     println!("cargo:rustc-link-search={}", out_dir.display());
+    let text = std::fs::read_to_string(&source)
+        .unwrap_or_else(|error| fail(&format!("cannot read {}: {error}", source.display())));
+    let region = |name: &str| {
+        memory_region(&text, name)
+            .unwrap_or_else(|| fail(&format!("{}: no `{name} : ORIGIN = ..., LENGTH = ...` line", source.display())))
+    };
+    Memory { flash: region("FLASH"), ram: region("RAM") }
+}
+
+/// The board's memory as its `memory.x` gives it: (origin, length in bytes) of each region.
+struct Memory {
+    flash: (u64, u64),
+    ram: (u64, u64),
+}
+
+impl Memory {
+    fn write(&self, out: &mut String) {
+        writeln!(out, "/// The board's flash and RAM (its memory.x): the MPU's regions, the RAM check (src/ram.rs).").unwrap();
+        writeln!(out, "pub const FLASH_ORIGIN: u32 = {:#010x};", self.flash.0).unwrap();
+        writeln!(out, "pub const FLASH_BYTES: u32 = {};", self.flash.1).unwrap();
+        writeln!(out, "pub const RAM_ORIGIN: u32 = {:#010x};", self.ram.0).unwrap();
+        writeln!(out, "pub const RAM_BYTES: u32 = {};", self.ram.1).unwrap();
+    }
+}
+
+/// `NAME : ORIGIN = 0x..., LENGTH = 64K` (decimal or hex, with an optional K or M) in a
+/// memory.x's `MEMORY` block.
+fn memory_region(text: &str, name: &str) -> Option<(u64, u64)> {
+    let number = |text: &str| -> Option<u64> {
+        let text = text.trim().trim_end_matches(',').trim();
+        let (digits, scale) = match text.as_bytes().last()? {
+            b'K' | b'k' => (&text[..text.len() - 1], 1024),
+            b'M' | b'm' => (&text[..text.len() - 1], 1024 * 1024),
+            _ => (text, 1),
+        };
+        let value = match digits.strip_prefix("0x").or_else(|| digits.strip_prefix("0X")) {
+            Some(hex) => u64::from_str_radix(&hex.replace('_', ""), 16).ok()?,
+            None => digits.parse().ok()?,
+        };
+        Some(value * scale)
+    };
+    text.lines().find_map(|line| {
+        let (region, rest) = line.trim().split_once(':')?;
+        if region.trim() != name {
+            return None;
+        }
+        let (origin, length) = rest.split_once(',')?;
+        let origin = number(origin.trim().strip_prefix("ORIGIN")?.trim().strip_prefix('=')?)?;
+        let length = number(length.trim().strip_prefix("LENGTH")?.trim().strip_prefix('=')?)?;
+        Some((origin, length))
+    })
 }
 
 /// The Rust type the tracer computes in, and the firmware feature it needs (a new number type
@@ -160,10 +264,10 @@ impl microtrace::number::SquareRoot for HostSqrt {
 
 /// Prepares the scene on the host in the number type `H` (as `microtrace render` does) and
 /// appends its parts prepared ahead (`microtrace::scene::ahead`) to `out`.
-fn ahead<H: microtrace::number::Number>(description: &SceneDescription<PARSE_CAPACITY>, out: &mut String) -> Result<(), String> {
+fn ahead<H: microtrace::number::Number>(description: &SceneDescription<PARSE_CAPACITY>, out: &mut String) -> Result<(), Ahead> {
     use microtrace::optimize::{capsule::Capsule, shadow::ShadowBound, ObjectBounds};
     let mut scene = Box::new(microtrace::scene::Scene::<H, PARSE_CAPACITY>::UNPREPARED);
-    scene.prepare_in_place(description, &description.objects).map_err(|error| error.to_string())?;
+    scene.prepare_in_place(description, &description.objects).map_err(Ahead::Scene)?;
     let bounds: Vec<ObjectBounds<H>> = description
         .objects
         .iter()
@@ -172,7 +276,7 @@ fn ahead<H: microtrace::number::Number>(description: &SceneDescription<PARSE_CAP
         })
         .collect();
     let mut text = String::new();
-    microtrace::scene::ahead::write_prepared_ahead(&*scene, &bounds, &mut text).map_err(|error| error.to_string())?;
+    microtrace::scene::ahead::write_prepared_ahead(&*scene, &bounds, &mut text).map_err(Ahead::Write)?;
     out.push_str(&text);
     Ok(())
 }
@@ -219,7 +323,7 @@ fn check_primitives<const N: usize>(description: &SceneDescription<N>, scene_pat
         if let Some(object) = description.objects.iter().find(|object| object.primitive == primitive) {
             if !enabled {
                 fail(&format!(
-                    "{}: line {}: the scene uses a {name} but the firmware was built without the `{name}` feature; \
+                    "{}:line {}: the scene uses a {name} but the firmware was built without the `{name}` feature; \
                      enable it (`cargo xtask firmware` picks the features from the scene)",
                     scene_path.display(),
                     object.line,
@@ -250,6 +354,8 @@ fn generate<const N: usize>(
     writeln!(out, "pub const NUMBER_NAME: &str = {:?};", number_name).unwrap();
     writeln!(out, "pub const BOARD_NAME: &str = {:?};", board.name()).unwrap();
     writeln!(out, "pub const SCENE_NAME: &str = {:?};", scene_name).unwrap();
+    writeln!(out, "/// The scene file as the build was given it, for messages.").unwrap();
+    writeln!(out, "pub const SCENE_PATH: &str = {:?};", scene_path.display().to_string()).unwrap();
     writeln!(out, "pub const WIDTH: u16 = {};", v.width()).unwrap();
     writeln!(out, "pub const HEIGHT: u16 = {};", v.height()).unwrap();
     writeln!(out, "pub const PIXEL_COUNT: usize = {};", v.pixel_count()).unwrap();

@@ -10,7 +10,9 @@
 mod board;
 mod decimal;
 mod display;
+mod fault;
 mod measurement;
+mod ram;
 mod report;
 mod semihosting;
 mod stack;
@@ -20,7 +22,7 @@ mod scene {
     include!(concat!(env!("OUT_DIR"), "/scene.rs"));
 }
 
-use cortex_m_rt::{entry, exception, ExceptionFrame};
+use cortex_m_rt::{entry, exception};
 use embedded_graphics::prelude::Point;
 use microtrace::pixel::{FrameBuffer, GreyDrawTargetSink, PixelSink, PixelSource};
 use microtrace::render::{render_pga, Statistics};
@@ -39,6 +41,11 @@ fn main() -> ! {
     // and prepared in place: returned by value it would pass through the stack. (cortex-m-rt
     // makes an entry's `static mut` a `&'static mut`.)
     static mut SCENE: PreparedScene = PreparedScene::UNPREPARED;
+    // From here on an access outside the flash, the RAM and the peripherals faults, and so does
+    // the stack running off the bottom of RAM (src/fault.rs).
+    fault::protect_memory();
+    #[cfg(microtrace_fault_test)]
+    fault::provoke_if_asked();
     let display = board::init();
     let Some(pixels) = cortex_m::singleton!(: [u8; scene::PIXEL_COUNT] = [0; scene::PIXEL_COUNT]) else {
         fail("framebuffer taken twice")
@@ -118,11 +125,16 @@ fn fail(why: &str) -> ! {
     semihosting::exit(false)
 }
 
-/// Panics end the run with failure, naming the place (no message: formatting it would pull in
-/// `core::fmt`'s float and padding code).
+/// Panics end the run with failure, naming the place and the message when it is plain text
+/// (formatting one would pull in `core::fmt`'s float and padding code). A normal build links
+/// no panic path at all (the tests check it), so this is reached only by the fault test.
 #[panic_handler]
 fn panic(info: &core::panic::PanicInfo) -> ! {
     print("microtrace: panic");
+    if let Some(message) = info.message().as_str() {
+        print(": ");
+        print(message);
+    }
     if let Some(location) = info.location() {
         print(" at ");
         print(location.file());
@@ -133,8 +145,17 @@ fn panic(info: &core::panic::PanicInfo) -> ! {
     semihosting::exit(false)
 }
 
+// The HardFault handler is in src/fault.rs (assembly: it must leave the faulting stack first).
+
+/// Any other exception or interrupt: none is enabled, so one is a bug. cortex-m-rt's default
+/// would spin forever; this says which it was and fails the run.
 #[exception]
-unsafe fn HardFault(_frame: &ExceptionFrame) -> ! {
-    print("microtrace: hard fault\n");
+unsafe fn DefaultHandler(number: i16) {
+    print("microtrace: unexpected exception or interrupt, IRQ number ");
+    if number < 0 {
+        print("-");
+    }
+    print(Decimal::new(u64::from(number.unsigned_abs())).as_str());
+    print("\n");
     semihosting::exit(false)
 }

@@ -5,9 +5,9 @@
 use cortex_m_rt::STACK_PAINT_VALUE;
 
 extern "C" {
-    /// Top of the stack (its initial value), from cortex-m-rt's `link.x`.
+    /// Top of the stack (its initial value): flip-link sets it just below the lowest static.
     static _stack_start: u32;
-    /// Lowest address the stack may reach (end of `.bss`/`.uninit`).
+    /// Lowest address the stack may reach: the start of RAM (flip-link; src/fault.rs).
     static _stack_end: u32;
 }
 

@@ -74,6 +74,39 @@ impl Primitives {
     }
 }
 
+/// What the fault test provokes (`cargo xtask firmware --provoke`; firmware/src/fault.rs): the
+/// firmware is built with `MICROTRACE_FAULT_TEST=1` and does it before preparing the scene, when
+/// it finds the file `provoke-NAME` in QEMU's directory. One build serves them all.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Fault {
+    /// `panic!` with a message.
+    Panic,
+    /// A write to an address outside the flash, RAM and peripherals, which the MPU stops.
+    HardFault,
+    /// PendSV pended: an exception no handler expects (cortex-m-rt's default would spin).
+    UnexpectedInterrupt,
+    /// Recursion until the stack runs off the bottom of RAM.
+    StackOverflow,
+}
+
+impl Fault {
+    pub const ALL: [Fault; 4] = [Fault::Panic, Fault::HardFault, Fault::UnexpectedInterrupt, Fault::StackOverflow];
+
+    /// The name on the command line and in the file `provoke-NAME`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Fault::Panic => "panic",
+            Fault::HardFault => "hard-fault",
+            Fault::UnexpectedInterrupt => "unexpected-interrupt",
+            Fault::StackOverflow => "stack-overflow",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|fault| fault.name() == name)
+    }
+}
+
 #[derive(Clone, Debug)]
 pub struct FirmwareOptions {
     pub scene: PathBuf,
@@ -85,6 +118,11 @@ pub struct FirmwareOptions {
     pub primitives: Primitives,
     pub out: PathBuf,
     pub timeout: Duration,
+    /// Build the fault test and provoke this fault (the run then fails, saying what happened).
+    pub provoke: Option<Fault>,
+    /// The stack the build's RAM check keeps free (`MICROTRACE_STACK_RESERVE`; firmware/src/ram.rs),
+    /// when not its default of 12 KB.
+    pub stack_reserve: Option<u32>,
 }
 
 impl FirmwareOptions {
@@ -97,6 +135,8 @@ impl FirmwareOptions {
             primitives: Primitives::Scene,
             out: out.into(),
             timeout: Duration::from_secs(300),
+            provoke: None,
+            stack_reserve: None,
         }
     }
 }
@@ -121,6 +161,10 @@ pub struct FirmwareRun {
 /// under this lock so that concurrent runs (the tests) never run each other's firmware.
 static BUILD_LOCK: Mutex<()> = Mutex::new(());
 
+/// The objects a scene may have at build time: firmware/build.rs's `PARSE_CAPACITY` (the tests
+/// check that both say the same).
+pub const FIRMWARE_SCENE_CAPACITY: usize = 512;
+
 /// The number types firmware/build.rs knows.
 pub const NUMBERS: [&str; 6] = ["f64", "f32", "fixed", "fixed16", "f32-micromath", "soft32"];
 
@@ -140,6 +184,12 @@ pub fn run(options: &FirmwareOptions) -> Result<FirmwareRun, String> {
     let out = options.out.canonicalize().map_err(|error| format!("{}: {error}", options.out.display()))?;
     for stale in ["framebuffer.bin", "report.txt", "report.json", "oled.png", "oled.ppm", "instructions.txt", "linked-audit.txt", "screendump.wanted", "screendump.done"] {
         let _ = std::fs::remove_file(out.join(stale));
+    }
+    for fault in Fault::ALL {
+        let _ = std::fs::remove_file(out.join(format!("provoke-{}", fault.name())));
+    }
+    if let Some(fault) = options.provoke {
+        touch(&out.join(format!("provoke-{}", fault.name())))?;
     }
 
     let elf_path = out.join("firmware.elf");
@@ -234,7 +284,16 @@ fn check_options(options: &FirmwareOptions) -> Result<(), String> {
 /// those), parsing it with the same parser as the firmware's build script.
 fn primitive_features(scene: &Path) -> Result<Vec<&'static str>, String> {
     let text = std::fs::read(scene).map_err(|error| format!("scene {}: {error}", scene.display()))?;
-    let description = microtrace::parser::parse::<1024>(&text).map_err(|error| format!("{}: {error}", scene.display()))?;
+    let description = microtrace::parser::parse::<FIRMWARE_SCENE_CAPACITY>(&text).map_err(|error| {
+        // The one format of scene errors (docs/bad-input.md): `FILE:line N: reason`.
+        let message = if error.line == 0 { format!("{}: {error}", scene.display()) } else { format!("{}:{error}", scene.display()) };
+        match error.kind {
+            microtrace::parser::SceneErrorKind::TooManyObjects { .. } => format!(
+                "{message} objects at build time (PARSE_CAPACITY in firmware/build.rs); no board this firmware runs on has the RAM for so many"
+            ),
+            _ => message,
+        }
+    })?;
     Ok(Primitive::ALL
         .into_iter()
         .filter(|primitive| description.objects.iter().any(|object| object.primitive == *primitive))
@@ -285,13 +344,34 @@ fn build(options: &FirmwareOptions, scene: &Path, primitive_features: &[&str]) -
         .env("MICROTRACE_NUMBER", &options.number)
         .env("MICROTRACE_OPT", &options.optimizations)
         .env("MICROTRACE_SIZE", "128x64")
+        .env("MICROTRACE_FAULT_TEST", if options.provoke.is_some() { "1" } else { "0" })
+        .env("MICROTRACE_STACK_RESERVE", options.stack_reserve.map(|bytes| bytes.to_string()).unwrap_or_default())
         .stdin(Stdio::null())
         .output()
         .map_err(|error| format!("cannot run cargo: {error}"))?;
     if !output.status.success() {
-        return Err(format!("building the firmware failed:\n{}", String::from_utf8_lossy(&output.stderr)));
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        return Err(match build_failure(&stderr) {
+            Some(reason) => format!("building the firmware failed: {reason}\n{stderr}"),
+            None => format!("building the firmware failed:\n{stderr}"),
+        });
     }
     Ok(target_dir.join(options.board.rust_target()).join("release/microtrace-firmware"))
+}
+
+/// The line that says why a build failed, when it is one of the firmware's own: build.rs's
+/// `error: ...` (a bad scene, a capacity) or the RAM check's `evaluation panicked: ...`
+/// (firmware/src/ram.rs).
+fn build_failure(stderr: &str) -> Option<String> {
+    stderr.lines().find_map(|line| {
+        let line = line.trim();
+        if let Some((_, message)) = line.split_once("evaluation panicked: ") {
+            return Some(message.to_owned());
+        }
+        line.strip_prefix("error: ")
+            .filter(|message| !message.starts_with("failed to run custom build command") && !message.starts_with("could not compile"))
+            .map(str::to_owned)
+    })
 }
 
 fn run_qemu(options: &FirmwareOptions, elf: &Path, out: &Path, plugin_arguments: &str) -> Result<(), String> {
@@ -312,7 +392,13 @@ fn run_qemu(options: &FirmwareOptions, elf: &Path, out: &Path, plugin_arguments:
     let _ = std::fs::remove_file(&socket);
     let result = (|| {
         let mut run = QemuRun::start(machine, elf, out, plugin_arguments, Some(&socket), options.timeout)?;
-        run.wait_for_output("microtrace: waiting for screendump")?;
+        if let Err(error) = run.wait_for_output("microtrace: waiting for screendump") {
+            // A firmware that stopped early (a panic, a fault) says why in its output.
+            return Err(match run.exited()? {
+                Some(status) if !status.success() => format!("the firmware failed ({status}); QEMU's output:\n{}", run.output()),
+                _ => error,
+            });
+        }
         let mut monitor = Monitor::connect(&socket, Duration::from_secs(10))?;
         let answer = monitor.command("screendump oled.ppm")?;
         let ppm_path = out.join("oled.ppm");

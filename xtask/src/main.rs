@@ -3,17 +3,20 @@
 use std::path::PathBuf;
 use std::time::Duration;
 
-use xtask::firmware::{self, Board, FirmwareOptions, Primitives};
+use xtask::firmware::{self, Board, Fault, FirmwareOptions, Primitives};
 use xtask::report::ReportFilter;
 
 fn usage() -> &'static str {
     "usage:
   cargo xtask firmware [--scene FILE] [--board lm3s6965evb|mps2-an386] [--number f64|f32|fixed|fixed16|f32-micromath|soft32]
                        [--opt scene|all|none|pixelbuffer,extents,grid,sortlist] [--out DIR]
-                       [--timeout SECONDS]
+                       [--timeout SECONDS] [--stack-reserve BYTES]
+                       [--provoke panic|hard-fault|unexpected-interrupt|stack-overflow]
       Builds the firmware for the scene (default scenes/snooker.mts), runs it under QEMU and
       leaves framebuffer.bin, oled.png (lm3s6965evb) and report.json in DIR
-      (default firmware/target/run/BOARD-SCENE-NUMBER).
+      (default firmware/target/run/BOARD-SCENE-NUMBER). --provoke builds the fault test, which
+      does that before preparing the scene: the run fails with the firmware's message.
+      --stack-reserve: the stack the build's RAM check keeps free (default 12288).
   cargo xtask firmware-example
       Builds (does not run) the real-board examples in firmware/examples/
       (Raspberry Pi Pico + SSD1306, Raspberry Pi Pico + ST7789).
@@ -79,6 +82,8 @@ fn firmware_task(arguments: &[String]) -> Result<(), String> {
     let mut optimizations = "scene".to_owned();
     let mut out: Option<PathBuf> = None;
     let mut timeout = Duration::from_secs(300);
+    let mut provoke = None;
+    let mut stack_reserve = None;
     let mut rest = arguments.iter();
     while let Some(flag) = rest.next() {
         let mut value = || rest.next().cloned().ok_or_else(|| format!("{flag} needs a value\n{}", usage()));
@@ -95,6 +100,14 @@ fn firmware_task(arguments: &[String]) -> Result<(), String> {
                 let seconds = value()?;
                 timeout = Duration::from_secs(seconds.parse().map_err(|_| format!("--timeout {seconds}: not a number of seconds"))?);
             }
+            "--stack-reserve" => {
+                let bytes = value()?;
+                stack_reserve = Some(bytes.parse().map_err(|_| format!("--stack-reserve {bytes}: not a number of bytes"))?);
+            }
+            "--provoke" => {
+                let name = value()?;
+                provoke = Some(Fault::from_name(&name).ok_or_else(|| format!("--provoke {name}: panic, hard-fault, unexpected-interrupt or stack-overflow"))?);
+            }
             "-h" | "--help" => {
                 println!("{}", usage());
                 return Ok(());
@@ -109,6 +122,8 @@ fn firmware_task(arguments: &[String]) -> Result<(), String> {
     let mut options = FirmwareOptions::new(scene, board, &number, out);
     options.optimizations = optimizations;
     options.timeout = timeout;
+    options.provoke = provoke;
+    options.stack_reserve = stack_reserve;
     let run = firmware::run(&options)?;
     println!("{}", firmware::summary(&run, &options));
     Ok(())

@@ -119,6 +119,11 @@ impl QemuRun {
         }
     }
 
+    /// QEMU's exit status if it has exited.
+    pub fn exited(&mut self) -> Result<Option<ExitStatus>, String> {
+        self.child.try_wait().map_err(|error| format!("waiting for QEMU: {error}"))
+    }
+
     /// Waits for QEMU to exit, killing it when time runs out.
     pub fn wait(&mut self) -> Result<ExitStatus, String> {
         loop {

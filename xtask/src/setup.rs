@@ -1,5 +1,6 @@
 //! Installs what the firmware tasks need when it is missing (CI machines start bare): the rust
-//! target of the board, QEMU and gcc (for the instruction-count plugin). Runs once per process.
+//! target of the board, QEMU, gcc (for the instruction-count plugin) and flip-link (the
+//! firmware's linker). Runs once per process.
 
 use std::process::{Command, Stdio};
 use std::sync::Mutex;
@@ -12,6 +13,7 @@ pub fn ensure_tools(rust_target: &str) -> Result<(), String> {
         return Ok(());
     }
     ensure_rust_target(rust_target)?;
+    ensure_cargo_install("flip-link")?;
     let mut missing = Vec::new();
     if !on_path("qemu-system-arm") {
         missing.push("qemu-system-arm");

@@ -42,3 +42,10 @@ pub fn hold_picture_for_capture() -> bool {
     semihosting::print("microtrace: no screendump came\n");
     false
 }
+
+/// The peripherals the firmware touches (SSI0, GPIO C and D, system control) lie in the first
+/// megabyte of the peripheral region: the MPU's region for them (src/fault.rs).
+pub const PERIPHERALS: (u32, u32) = (0x4000_0000, 1 << 20);
+
+/// The OLED's RAM copy, static RAM the scene check counts (src/ram.rs).
+pub const DISPLAY_COPY_BYTES: usize = core::mem::size_of::<ssd0323::ScreenCopy>();

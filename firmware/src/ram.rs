@@ -1,0 +1,122 @@
+//! Does the scene fit the chip's RAM? Checked at compile time, in the target's own layout, before
+//! the linker runs: a scene too large fails the build with a message naming the scene, what it
+//! needs and what the board has, e.g.
+//!
+//! ```text
+//! error[E0080]: evaluation panicked: /…/many-130.mts: needs 79,648 bytes of RAM (the prepared
+//! scene 55,072 for 130 objects in f32, framebuffer 8,192 for 128x64, display copy 4,096, stack
+//! reserve 12,288), the lm3s6965evb has 65,536 (firmware/README.md, "When it fails")
+//! ```
+//!
+//! instead of rust-lld's `section '.bss' will not fit in region 'RAM'` (or, worse, a build that
+//! links and then runs its stack through the statics). The static RAM counted is the prepared
+//! scene (`size_of` of `Scene<Number, OBJECT_COUNT>` as compiled for the chip), the framebuffer
+//! and the board's display copy; the few bytes of other statics fit in the stack reserve.
+//!
+//! The stack reserve is the budget's peak stack (firmware/README.md, "Memory budget": 12 KB; the
+//! deepest the report measures is 11,060 bytes, the lattice in `f64` on the mps2-an386), or
+//! `MICROTRACE_STACK_RESERVE` (build.rs). A scene that passes this check and still overflows its
+//! stack stops with "stack overflow" (src/fault.rs), never silently.
+
+use crate::scene;
+
+/// The stack this build keeps free for preparing and rendering (see the module's comment).
+pub const STACK_RESERVE_BYTES: usize = scene::STACK_RESERVE_BYTES;
+
+/// The static RAM the scene takes: the prepared scene, the framebuffer, the display's copy.
+pub const SCENE_BYTES: usize = core::mem::size_of::<crate::PreparedScene>();
+pub const FRAMEBUFFER_BYTES: usize = scene::PIXEL_COUNT;
+pub const DISPLAY_COPY_BYTES: usize = crate::board::DISPLAY_COPY_BYTES;
+pub const NEEDED_BYTES: usize = SCENE_BYTES + FRAMEBUFFER_BYTES + DISPLAY_COPY_BYTES + STACK_RESERVE_BYTES;
+
+const _: () = {
+    if NEEDED_BYTES > scene::RAM_BYTES as usize {
+        panic!("{}", TOO_LARGE.as_str());
+    }
+};
+
+/// The message, written at compile time (a `const` panic takes a `&str`, not a format).
+const TOO_LARGE: Text = Text::new()
+    .text(scene::SCENE_PATH)
+    .text(": needs ")
+    .number(NEEDED_BYTES)
+    .text(" bytes of RAM (the prepared scene ")
+    .number(SCENE_BYTES)
+    .text(" for ")
+    .number(scene::OBJECT_COUNT)
+    .text(" objects in ")
+    .text(scene::NUMBER_NAME)
+    .text(", framebuffer ")
+    .number(FRAMEBUFFER_BYTES)
+    .text(" for ")
+    .number(scene::WIDTH as usize)
+    .text("x")
+    .number(scene::HEIGHT as usize)
+    .text(", display copy ")
+    .number(DISPLAY_COPY_BYTES)
+    .text(", stack reserve ")
+    .number(STACK_RESERVE_BYTES)
+    .text("), the ")
+    .text(scene::BOARD_NAME)
+    .text(" has ")
+    .number(scene::RAM_BYTES as usize)
+    .text(" (firmware/README.md, \"When it fails\")");
+
+/// Text built by `const fn`s: at most `CAPACITY` bytes (more is cut off).
+struct Text {
+    bytes: [u8; Text::CAPACITY],
+    length: usize,
+}
+
+impl Text {
+    const CAPACITY: usize = 1024;
+
+    const fn new() -> Self {
+        Self { bytes: [0; Self::CAPACITY], length: 0 }
+    }
+
+    const fn text(mut self, text: &str) -> Self {
+        let bytes = text.as_bytes();
+        let mut index = 0;
+        while index < bytes.len() && self.length < Self::CAPACITY {
+            self.bytes[self.length] = bytes[index];
+            self.length += 1;
+            index += 1;
+        }
+        self
+    }
+
+    /// `value` in decimal, thousands separated by commas (65,536).
+    const fn number(mut self, value: usize) -> Self {
+        let mut digits = [0u8; 32];
+        let mut count = 0;
+        let mut rest = value;
+        loop {
+            if count % 4 == 3 {
+                digits[count] = b',';
+                count += 1;
+            }
+            digits[count] = b'0' + (rest % 10) as u8;
+            count += 1;
+            rest /= 10;
+            if rest == 0 {
+                break;
+            }
+        }
+        while count > 0 && self.length < Self::CAPACITY {
+            count -= 1;
+            self.bytes[self.length] = digits[count];
+            self.length += 1;
+        }
+        self
+    }
+
+    const fn as_str(&self) -> &str {
+        let (text, _) = self.bytes.split_at(self.length);
+        match core::str::from_utf8(text) {
+            Ok(text) => text,
+            // Only reached if a cut fell inside a UTF-8 sequence of the scene's path.
+            Err(_) => "the scene needs more RAM than the board has (its path is not valid UTF-8)",
+        }
+    }
+}

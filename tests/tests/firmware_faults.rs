@@ -1,0 +1,245 @@
+//! The firmware fails loudly (firmware/README.md, "When it fails"), on both boards:
+//! - a panic, a hard fault, an unexpected interrupt and a stack overflow, each provoked by the fault test
+//!   (`MICROTRACE_FAULT_TEST=1`, `cargo xtask firmware --provoke`), end the QEMU run with exit
+//!   status 1 and the firmware's message naming what happened, well before the timeout;
+//! - the stack lies below the statics (flip-link), from the start of RAM, so an overflow runs
+//!   off RAM (where the MPU faults) and never through the prepared scene; a real scene that
+//!   leaves too little stack (the build's stack reserve set to 0) stops with "stack overflow";
+//! - a scene too large for the chip's RAM fails at build time with the RAM it needs, part by
+//!   part, and the board's RAM, not with rust-lld's `will not fit in region 'RAM'`;
+//! - a scene with more objects than the build's capacity fails, naming the file, the line and
+//!   the capacity, in xtask and in firmware/build.rs alike.
+//!
+//! One fault-test build per board serves all four faults (the firmware picks the fault from a
+//! file xtask leaves in QEMU's directory); the scenes too large fail before code generation.
+
+use std::path::PathBuf;
+use std::time::{Duration, Instant};
+
+use xtask::firmware::{self, Board, Fault, FirmwareOptions, FIRMWARE_SCENE_CAPACITY};
+
+fn scene_path(name: &str) -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../scenes").join(name)
+}
+
+fn work_dir(name: &str) -> PathBuf {
+    PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("firmware-faults").join(name)
+}
+
+/// The RAM both boards' memory.x give the firmware.
+const RAM_BYTES: u64 = 64 * 1024;
+const RAM_ORIGIN: u64 = 0x2000_0000;
+
+/// What each provoked fault must print (the start of the firmware's line).
+fn expected_message(fault: Fault) -> &'static [&'static str] {
+    match fault {
+        Fault::Panic => &["microtrace: panic: provoked by the fault test (provoke-panic) at src/fault.rs:"],
+        Fault::HardFault => &[
+            "microtrace: hard fault at PC 0x",
+            ": data access outside the flash, RAM and peripherals (MemManage), at address 0x44444444 (CFSR 0x00000082, HFSR 0x40000000)",
+        ],
+        // PendSV is exception 14, IRQ number 14 - 16.
+        Fault::UnexpectedInterrupt => &["microtrace: unexpected exception or interrupt, IRQ number -2\n"],
+        Fault::StackOverflow => &[
+            "microtrace: stack overflow: the stack grew below its bottom, the start of RAM at 0x20000000 (an access at 0x1fff",
+            " bytes, what the RAM leaves below the statics, which it cannot reach (flip-link)",
+        ],
+    }
+}
+
+fn faults_fail_loudly(board: Board) {
+    for fault in Fault::ALL {
+        let out = work_dir(&format!("{}-{}", board.name(), fault.name()));
+        let mut options = FirmwareOptions::new(scene_path("snooker.mts"), board, "f32", &out);
+        options.provoke = Some(fault);
+        options.timeout = Duration::from_secs(60);
+        let started = Instant::now();
+        let error = match firmware::run(&options) {
+            Ok(_) => panic!("{} on {}: the run succeeded", fault.name(), board.name()),
+            Err(error) => error,
+        };
+        let context = format!("{} on {}: {error}", fault.name(), board.name());
+        println!("{context}");
+        // QEMU's exit status is the firmware's semihosting exit: failure, 1.
+        assert!(error.contains("the firmware failed (exit status: 1); QEMU's output:"), "{context}");
+        for text in expected_message(fault) {
+            assert!(error.contains(text), "{context}\n(expected {text:?})");
+        }
+        assert!(!error.contains("timed out"), "{context}");
+        // Build and run, not a wait for the timeout (a cached build runs in well under a second).
+        assert!(started.elapsed() < Duration::from_secs(50), "{context}: took {:?}", started.elapsed());
+
+        let elf = std::fs::read(out.join("firmware.elf")).unwrap();
+        if fault == Fault::HardFault {
+            // The PC named is the faulting store's: within the firmware's code.
+            let pc = error.split("hard fault at PC 0x").nth(1).and_then(|rest| u64::from_str_radix(rest.get(..8)?, 16).ok());
+            let code_end = xtask::elf::function_address(&elf, "__etext").unwrap_or(256 * 1024);
+            assert!(pc.is_some_and(|pc| pc > 0x400 && pc < code_end), "{context}: PC {pc:?} outside the code (ends {code_end:#x})");
+        }
+        if fault == Fault::StackOverflow {
+            // The size it names is the ELF's stack: from the start of RAM to the lowest static.
+            let size = symbol(&elf, "_stack_start") - symbol(&elf, "_stack_end");
+            assert!(error.contains(&format!("; it has {} bytes,", grouped(size))), "{context}\n(expected the stack's {size} bytes)");
+        }
+        stack_is_below_the_statics(&elf, board);
+    }
+}
+
+fn symbol(elf: &[u8], name: &str) -> u64 {
+    xtask::elf::function_address(elf, name).unwrap_or_else(|error| panic!("{error}"))
+}
+
+/// 42856 as "42,856".
+fn grouped(value: u64) -> String {
+    let digits = value.to_string();
+    let mut text = String::new();
+    for (index, digit) in digits.chars().enumerate() {
+        if index > 0 && (digits.len() - index).is_multiple_of(3) {
+            text.push(',');
+        }
+        text.push(digit);
+    }
+    text
+}
+
+/// flip-link's layout: the stack runs from its top down to the start of RAM, and every static
+/// (.data, .bss) lies above its top.
+fn stack_is_below_the_statics(elf: &[u8], board: Board) {
+    let symbol = |name: &str| symbol(elf, name);
+    let (top, bottom) = (symbol("_stack_start"), symbol("_stack_end"));
+    assert_eq!(bottom, RAM_ORIGIN, "{}: the stack's bottom is the start of RAM", board.name());
+    for statics in ["__sdata", "__sbss"] {
+        assert!(symbol(statics) >= top, "{}: {statics} at {:#x} is below the stack's top {top:#x}", board.name(), symbol(statics));
+    }
+    assert!(symbol("__ebss") <= RAM_ORIGIN + RAM_BYTES, "{}: .bss ends beyond the RAM", board.name());
+}
+
+#[test]
+fn faults_on_lm3s6965evb_fail_loudly() {
+    faults_fail_loudly(Board::Lm3s6965evb);
+}
+
+#[test]
+fn faults_on_mps2_an386_fail_loudly() {
+    faults_fail_loudly(Board::Mps2An386);
+}
+
+/// A scene of `count` spheres on a table, `LINES_PER_SPHERE` lines each after the header.
+fn many_spheres(count: usize) -> PathBuf {
+    let mut text = String::from(
+        "# generated by tests/firmware_faults.rs\n\
+         viewport 0 527 0 479\n\
+         window -400 400 -300 300\n\
+         viewplane 1000\n\
+         perspective 0 300 1500\n\
+         light point 300 1400 900\n\
+         ambient 0.2\n\
+         shadows on\n\
+         group 1 15 1 1 up\n",
+    );
+    for index in 0..count {
+        let (x, z) = ((index % 25) as f64 * 30.0 - 360.0, (index / 25) as f64 * 30.0);
+        text += &format!("sphere\n  scale 12 12 12\n  translate {x} 12 {z}\n  colour 1\n");
+    }
+    let path = work_dir("scenes").join(format!("many-{count}.mts"));
+    std::fs::create_dir_all(path.parent().unwrap()).unwrap();
+    std::fs::write(&path, text).unwrap();
+    path
+}
+const HEADER_LINES: usize = 9;
+const LINES_PER_SPHERE: usize = 4;
+
+/// The integer after `label` in `text` ("65,536" reads 65536).
+fn number_after(text: &str, label: &str) -> u64 {
+    let rest = text.split(label).nth(1).unwrap_or_else(|| panic!("no {label:?} in {text}"));
+    let digits: String = rest.chars().take_while(|c| c.is_ascii_digit() || *c == ',').filter(char::is_ascii_digit).collect();
+    digits.parse().unwrap_or_else(|_| panic!("no number after {label:?} in {text}"))
+}
+
+/// 130 spheres need about 80 KB (55 KB of prepared scene in `f32`): more than either board's
+/// 64 KB. The build stops in the firmware's compile-time RAM check, with the parts that add up.
+fn a_scene_too_large_fails_at_build_time(board: Board) {
+    let scene = many_spheres(130);
+    let options = FirmwareOptions::new(&scene, board, "f32", work_dir(&format!("{}-too-large", board.name())));
+    let error = firmware::run(&options).unwrap_err();
+    let context = format!("{}: {error}", board.name());
+    println!("{}", error.lines().next().unwrap_or_default());
+    let line = error.lines().next().unwrap_or_default();
+    assert!(line.starts_with(&format!("building the firmware failed: {}: needs ", scene.display())), "{context}");
+    assert!(line.contains(" for 130 objects in f32, framebuffer 8,192 for 128x64, display copy "), "{context}");
+    assert!(line.contains(&format!("), the {} has 65,536 (firmware/README.md, \"When it fails\")", board.name())), "{context}");
+    assert!(!error.contains("will not fit in region"), "{context}: the linker ran");
+
+    let needed = number_after(line, ": needs ");
+    let parts = ["the prepared scene ", "framebuffer ", "display copy ", "stack reserve "].map(|label| number_after(line, label));
+    assert_eq!(parts.iter().sum::<u64>(), needed, "{context}: the parts do not add up");
+    assert!(needed > RAM_BYTES, "{context}");
+    let display_copy = if board.has_display() { 4096 } else { 0 };
+    assert_eq!(parts[1..], [8192, display_copy, 12 * 1024], "{context}");
+    // The prepared scene grows with the objects: over 300 bytes each in f32.
+    assert!(parts[0] > 130 * 300, "{context}");
+}
+
+#[test]
+fn a_scene_too_large_for_the_lm3s6965evb_fails_at_build_time() {
+    a_scene_too_large_fails_at_build_time(Board::Lm3s6965evb);
+}
+
+#[test]
+fn a_scene_too_large_for_the_mps2_an386_fails_at_build_time() {
+    a_scene_too_large_fails_at_build_time(Board::Mps2An386);
+}
+
+/// A real scene whose statics leave too little stack (the RAM check's reserve set to 0): the
+/// stack overflows inside the render's preparation, where a frame of a few KB jumps past the
+/// bottom of RAM at once (a guard of a few words would miss it), and the run says so. On the
+/// lm3s6965evb this is what used to hang until the timeout.
+fn a_scene_that_overflows_its_stack_says_so(board: Board, objects: usize) {
+    let scene = many_spheres(objects);
+    let out = work_dir(&format!("{}-overflowing-{objects}", board.name()));
+    let mut options = FirmwareOptions::new(&scene, board, "f32", &out);
+    options.stack_reserve = Some(0);
+    options.timeout = Duration::from_secs(60);
+    let error = firmware::run(&options).unwrap_err();
+    let context = format!("{} with {objects} spheres: {error}", board.name());
+    println!("{context}");
+    assert!(error.contains("the firmware failed (exit status: 1); QEMU's output:"), "{context}");
+    assert!(error.contains("microtrace: stack overflow: the stack grew below its bottom, the start of RAM at 0x20000000"), "{context}");
+    let elf = std::fs::read(out.join("firmware.elf")).unwrap();
+    let size = symbol(&elf, "_stack_start") - symbol(&elf, "_stack_end");
+    // Less than the 12 KB the check reserves by default, more than a few frames.
+    assert!((1024..12 * 1024).contains(&size), "{context}: a stack of {size} bytes");
+    assert!(error.contains(&format!("; it has {} bytes,", grouped(size))), "{context}");
+    stack_is_below_the_statics(&elf, board);
+}
+
+#[test]
+fn a_scene_that_overflows_its_stack_on_lm3s6965evb_says_so() {
+    a_scene_that_overflows_its_stack_says_so(Board::Lm3s6965evb, 119);
+}
+
+#[test]
+fn a_scene_that_overflows_its_stack_on_mps2_an386_says_so() {
+    // No OLED copy: ten more spheres leave the same stack.
+    a_scene_that_overflows_its_stack_says_so(Board::Mps2An386, 129);
+}
+
+/// One object more than the build's capacity: xtask (which parses the scene first) and
+/// firmware/build.rs (building without xtask's parse) both name the file, the line of the
+/// object that does not fit and the capacity.
+#[test]
+fn a_scene_over_the_build_capacity_fails_naming_it() {
+    let count = FIRMWARE_SCENE_CAPACITY + 1;
+    let scene = many_spheres(count);
+    let expected = format!(
+        "{}:line {}: too many objects: this build holds at most {FIRMWARE_SCENE_CAPACITY} objects at build time (PARSE_CAPACITY in firmware/build.rs)",
+        scene.display(),
+        HEADER_LINES + LINES_PER_SPHERE * FIRMWARE_SCENE_CAPACITY + 1
+    );
+    let options = FirmwareOptions::new(&scene, Board::Lm3s6965evb, "f32", work_dir("over-capacity"));
+    let error = firmware::run(&options).unwrap_err();
+    println!("{error}");
+    assert!(error.contains(&expected), "xtask: {error}\n(expected {expected:?})");
+    let error = firmware::build_with_primitives(&options, &["sphere"]).unwrap_err();
+    assert!(error.starts_with(&format!("building the firmware failed: {expected}")), "build.rs: {error}\n(expected {expected:?})");
+}
