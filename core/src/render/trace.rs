@@ -33,7 +33,7 @@ pub fn shade_pixel<N: Number, const MAX_OBJECTS: usize>(
     shade_pixel_cached(scene, pixel, statistics, &mut ShadowCache::default(), &ShadowCulling::default())
 }
 
-fn shade_pixel_cached<N: Number, const MAX_OBJECTS: usize>(
+pub(crate) fn shade_pixel_cached<N: Number, const MAX_OBJECTS: usize>(
     scene: &Scene<N, MAX_OBJECTS>,
     pixel: PixelPosition,
     statistics: &mut Statistics,
@@ -270,7 +270,7 @@ where
 /// in the number type, in work linear in the objects and their overlapping pairs
 /// (`optimize::shadow::blocker_table`). Without the `acceleration-tables` feature there are none.
 #[cfg(feature = "acceleration-tables")]
-fn with_shadow_culling<N: Number, R, const MAX_OBJECTS: usize>(
+pub(crate) fn with_shadow_culling<N: Number, R, const MAX_OBJECTS: usize>(
     scene: &Scene<N, MAX_OBJECTS>,
     body: impl FnOnce(&ShadowCulling<'_, N>) -> R,
 ) -> R {
@@ -312,7 +312,7 @@ fn build_shadow_tables<N: Number, const MAX_OBJECTS: usize>(
 }
 
 #[cfg(not(feature = "acceleration-tables"))]
-fn with_shadow_culling<N: Number, R, const MAX_OBJECTS: usize>(
+pub(crate) fn with_shadow_culling<N: Number, R, const MAX_OBJECTS: usize>(
     _scene: &Scene<N, MAX_OBJECTS>,
     body: impl FnOnce(&ShadowCulling<'_, N>) -> R,
 ) -> R {
