@@ -135,6 +135,23 @@ fn window_shows_the_same_image_as_render() {
     check_scene(&binary, &display, "snooker", &["--number", "f32", "--opt", "none", "--dither", "on"]);
 }
 
+/// `view --progressive` (coarse to fine, straight into the window) ends with the same window
+/// image as the plain `view`, and reports each pass's rays in the panel's statistics on stderr.
+#[test]
+fn progressive_view_ends_with_the_same_image() {
+    let Some((display, _xvfb)) = display_or_skip() else { return };
+    let binary = microtrace_binary();
+    for scene in ["snooker", "lattice"] {
+        let ((width, height, plain), _) = screenshot_and_stderr(&binary, &display, scene, &[]);
+        let ((progressive_width, _, progressive), stderr) = screenshot_and_stderr(&binary, &display, scene, &["--progressive"]);
+        assert_eq!(width, progressive_width);
+        let image_area = |window: &[[u8; 3]]| (0..120).flat_map(|y| (0..132).map(move |x| (y * width + x) as usize)).map(|i| window[i]).collect::<Vec<_>>();
+        assert!(image_area(&plain) == image_area(&progressive), "{scene}: the progressive view's image differs");
+        assert!(height >= 120 && plain != progressive, "{scene}: the panel should say progressive");
+        assert!(stderr.contains("pass 1 (8x8)") && stderr.contains("pass 4 (1x1)"), "{stderr}");
+    }
+}
+
 /// Runs `microtrace view SCENE --size 132x120 --screenshot` with `extra` and returns the
 /// screenshot.
 fn screenshot(binary: &Path, display: &str, scene: &str, extra: &[&str]) -> (u32, u32, Vec<[u8; 3]>) {

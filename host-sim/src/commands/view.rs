@@ -18,7 +18,7 @@ use embedded_graphics::primitives::Rectangle;
 use embedded_graphics::text::{Baseline, Text};
 use embedded_graphics_simulator::{OutputSettings, OutputSettingsBuilder, SimulatorDisplay, SimulatorEvent};
 use microtrace::pixel::FrameBuffer;
-use microtrace::render::{render_pga, render_rgb, Statistics};
+use microtrace::render::{render_pga, render_pga_progressive, render_rgb, render_rgb_progressive, PassStatistics, Statistics};
 use microtrace::scene::{Optimizations, Scene};
 
 use crate::commands::render::statistics_table;
@@ -68,6 +68,9 @@ pub struct ViewArgs {
     /// Start with the pixels the Pixelbuffer's fill marks tinted (F toggles it).
     #[arg(long)]
     pub fill: bool,
+    /// Trace coarse to fine: 8x8 blocks, then 4x4, 2x2 and every pixel (C toggles it).
+    #[arg(long)]
+    pub progressive: bool,
     /// Render fully, save the finished window (image, overlay, panel) to FILE.png and exit.
     #[arg(long, value_name = "FILE.png")]
     pub screenshot: Option<PathBuf>,
@@ -82,6 +85,7 @@ struct Settings {
     mode: Mode,
     overlay: bool,
     fill: bool,
+    progressive: bool,
 }
 
 /// One finished render: the image, its statistics and what the overlay draws.
@@ -124,7 +128,7 @@ pub fn run(args: ViewArgs) -> anyhow::Result<()> {
     let output = OutputSettingsBuilder::new().scale(args.scale).build();
     let title = format!("MicroTrace — {}", args.scene.display());
     let mut view = View::open(&title, &output, &display)?;
-    let mut settings = Settings { number: args.number, mode: args.mode, overlay: args.overlay, fill: args.fill };
+    let mut settings = Settings { number: args.number, mode: args.mode, overlay: args.overlay, fill: args.fill, progressive: args.progressive };
 
     loop {
         let finished = render(&scene, &settings, &mut display, &mut view).map_err(|error| scene_file::in_file(&args.scene, error))?;
@@ -174,6 +178,7 @@ pub fn run(args: ViewArgs) -> anyhow::Result<()> {
                     Action::SwitchMode => settings.mode = if settings.mode == Mode::Pga { Mode::Rgb } else { Mode::Pga },
                     Action::ToggleDither => scene.dither = !scene.dither,
                     Action::ToggleShadows => scene.shadows = !scene.shadows,
+                    Action::ToggleProgressive => settings.progressive = !settings.progressive,
                     Action::ToggleOverlay | Action::ToggleFill => {
                         if action == Action::ToggleOverlay {
                             settings.overlay = !settings.overlay;
@@ -258,25 +263,36 @@ fn render(scene: &HostScene, settings: &Settings, display: &mut SimulatorDisplay
         let plan = PlanView::of(&*prepared);
         let fill = PixelbufferFill::record(&*prepared);
         let mut statistics = Statistics::default();
+        // Progressive: the passes go straight to the window, each drawn as it finishes.
+        let mut passes = settings.progressive.then(PassStatistics::default);
         let started = Instant::now();
         let pixels = match settings.mode {
             Mode::Pga => {
                 let mut buffer = vec![0u8; count];
                 let frame = FrameBuffer::new(&mut buffer, width, height).expect("buffer sized to the viewport");
                 let mut sink = ui::sink::WindowSink::new(frame, display, &palette, Some(view));
-                render_pga(&*prepared, &mut sink, &mut statistics);
+                match &mut passes {
+                    Some(passes) => render_pga_progressive(&*prepared, &mut sink, passes),
+                    None => render_pga(&*prepared, &mut sink, &mut statistics),
+                }
                 Pixels::Pga(buffer)
             }
             Mode::Rgb => {
                 let mut buffer = vec![[0u8; 3]; count];
                 let frame = FrameBuffer::new(&mut buffer, width, height).expect("buffer sized to the viewport");
                 let mut sink = ui::sink::WindowSink::new(frame, display, &palette, Some(view));
-                render_rgb(&*prepared, &mut sink, &mut statistics);
+                match &mut passes {
+                    Some(passes) => render_rgb_progressive(&*prepared, &mut sink, passes),
+                    None => render_rgb(&*prepared, &mut sink, &mut statistics),
+                }
                 Pixels::Rgb(buffer)
             }
         };
+        if let Some(passes) = &passes {
+            statistics = passes.total();
+        }
         let trace = started.elapsed();
-        Ok(Finished { rendered: Rendered { viewport, palette, pixels, statistics, preprocess, trace }, extents, grid, plan, fill })
+        Ok(Finished { rendered: Rendered { viewport, palette, pixels, statistics, passes, preprocess, trace }, extents, grid, plan, fill })
     })
 }
 
@@ -325,13 +341,17 @@ fn draw_finished(
         format!("ray-object tests {}", s.ro_tests),
         format!("ray-object hits  {}", s.ro_hits),
         format!("shadow rays {} tests {}", s.shadow_rays, s.shadow_tests),
+        match &rendered.passes {
+            Some(passes) => format!("progressive, rays {}", passes.passes.map(|p| p.rays_traced.to_string()).join("/")),
+            None => "progressive off".to_owned(),
+        },
     ];
     let y = panel.y + (ui::oled::HEIGHT as u32 * ui::oled::ZOOM) as i32 + 8;
     ui::panel::draw(&lines, display, Point::new(panel.x, y));
 }
 
 /// Lines of text in the panel above the key help.
-const PANEL_LINES: usize = 11;
+const PANEL_LINES: usize = 12;
 /// Top of the plan view's drawing area (below its title).
 const PLAN_TOP: u32 = 4 + 12;
 

@@ -14,6 +14,7 @@ pub enum Action {
     ToggleShadows,
     ToggleOverlay,
     ToggleFill,
+    ToggleProgressive,
     SavePng,
     Quit,
 }
@@ -27,6 +28,7 @@ pub const HELP: &[(&str, &str)] = &[
     ("S", "shadows on/off"),
     ("O", "overlay: extents, grid, plan"),
     ("F", "show Pixelbuffer fill"),
+    ("C", "progressive (coarse-to-fine)"),
     ("P", "save PNG"),
     ("Q/Esc", "quit"),
 ];
@@ -43,6 +45,7 @@ pub fn action(key: Keycode) -> Option<Action> {
         Keycode::S => Action::ToggleShadows,
         Keycode::O => Action::ToggleOverlay,
         Keycode::F => Action::ToggleFill,
+        Keycode::C => Action::ToggleProgressive,
         Keycode::P => Action::SavePng,
         Keycode::Q | Keycode::Escape => Action::Quit,
         _ => return None,
