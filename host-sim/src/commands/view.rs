@@ -2,7 +2,8 @@
 //!
 //! The image is traced by the same core through the same `PixelSink`/`PixelSource` path as the
 //! firmware and appears row by row from the top; the panel shows the settings, the statistics
-//! and the render time, the key help, and a preview of the firmware's 128x64 grey OLED. The
+//! and the render time, the key help, and a preview of a display the firmware drives (the
+//! 128x64 grey OLED, a 1-bit SSD1306 through the dither, a 240x240 RGB565 panel). The
 //! overlay draws what the optimizations see: extents and grid cells on the image, and beside
 //! the panel a plan view of the bounding volumes with Sortlist's depth ranges.
 
@@ -35,6 +36,7 @@ use ui::keys::{self, Action};
 use ui::fill::PixelbufferFill;
 use ui::overlay::ScreenExtent;
 use ui::plan::PlanView;
+use ui::preview::DisplayKind;
 use ui::window::View;
 
 #[derive(clap::Args, Clone, Debug)]
@@ -71,6 +73,9 @@ pub struct ViewArgs {
     /// Trace coarse to fine: 8x8 blocks, then 4x4, 2x2 and every pixel (C toggles it).
     #[arg(long)]
     pub progressive: bool,
+    /// The display previewed beside the image (L cycles them).
+    #[arg(long, value_enum, default_value = "oled")]
+    pub display: DisplayKind,
     /// Render fully, save the finished window (image, overlay, panel) to FILE.png and exit.
     #[arg(long, value_name = "FILE.png")]
     pub screenshot: Option<PathBuf>,
@@ -86,6 +91,7 @@ struct Settings {
     overlay: bool,
     fill: bool,
     progressive: bool,
+    display: DisplayKind,
 }
 
 /// One finished render: the image, its statistics and what the overlay draws.
@@ -121,14 +127,14 @@ pub fn run(args: ViewArgs) -> anyhow::Result<()> {
     }
     let (width, height) = (u32::from(scene.viewport.width()), u32::from(scene.viewport.height()));
     let panel_x = width + 8;
-    let panel_height = ui::oled::HEIGHT as u32 * ui::oled::ZOOM + 12 + ui::panel::height(PANEL_LINES);
+    let panel_height = DisplayKind::tallest() + 12 + ui::panel::height(PANEL_LINES);
     let plan_height = PLAN_TOP + ui::plan::HEIGHT + 8 + ui::depth_ranges::height(scene.objects.len()) + 4;
     let window_size = Size::new(panel_x + ui::panel::WIDTH + ui::plan::WIDTH + 8, height.max(panel_height).max(plan_height));
     let mut display = SimulatorDisplay::<EgRgb888>::new(window_size);
     let output = OutputSettingsBuilder::new().scale(args.scale).build();
     let title = format!("MicroTrace — {}", args.scene.display());
     let mut view = View::open(&title, &output, &display)?;
-    let mut settings = Settings { number: args.number, mode: args.mode, overlay: args.overlay, fill: args.fill, progressive: args.progressive };
+    let mut settings = Settings { number: args.number, mode: args.mode, overlay: args.overlay, fill: args.fill, progressive: args.progressive, display: args.display };
 
     loop {
         let finished = render(&scene, &settings, &mut display, &mut view).map_err(|error| scene_file::in_file(&args.scene, error))?;
@@ -141,8 +147,8 @@ pub fn run(args: ViewArgs) -> anyhow::Result<()> {
             mode_name(settings.mode),
             optimization_names(scene.optimizations)
         );
-        let oled = ui::oled::render(&scene, settings.number).map_err(|error| scene_file::in_file(&args.scene, error))?;
-        draw_finished(&scene, &settings, &finished, &oled, &mut display, Point::new(panel_x as i32, 4));
+        let mut preview = ui::preview::render(&scene, settings.number, settings.display).map_err(|error| scene_file::in_file(&args.scene, error))?;
+        draw_finished(&scene, &settings, &finished, &preview, &mut display, Point::new(panel_x as i32, 4));
         view.update(&display);
         if let Some(path) = &args.screenshot {
             display
@@ -179,13 +185,17 @@ pub fn run(args: ViewArgs) -> anyhow::Result<()> {
                     Action::ToggleDither => scene.dither = !scene.dither,
                     Action::ToggleShadows => scene.shadows = !scene.shadows,
                     Action::ToggleProgressive => settings.progressive = !settings.progressive,
-                    Action::ToggleOverlay | Action::ToggleFill => {
-                        if action == Action::ToggleOverlay {
-                            settings.overlay = !settings.overlay;
-                        } else {
-                            settings.fill = !settings.fill;
+                    Action::ToggleOverlay | Action::ToggleFill | Action::CycleDisplay => {
+                        match action {
+                            Action::ToggleOverlay => settings.overlay = !settings.overlay,
+                            Action::ToggleFill => settings.fill = !settings.fill,
+                            _ => {
+                                settings.display = settings.display.next();
+                                preview = ui::preview::render(&scene, settings.number, settings.display)
+                                    .map_err(|error| scene_file::in_file(&args.scene, error))?;
+                            }
                         }
-                        draw_finished(&scene, &settings, &finished, &oled, &mut display, Point::new(panel_x as i32, 4));
+                        draw_finished(&scene, &settings, &finished, &preview, &mut display, Point::new(panel_x as i32, 4));
                         continue;
                     }
                     Action::SavePng => {
@@ -296,12 +306,12 @@ fn render(scene: &HostScene, settings: &Settings, display: &mut SimulatorDisplay
     })
 }
 
-/// Redraws the image (with the overlay if on), the OLED preview and the panel.
+/// Redraws the image (with the overlay if on), the display preview and the panel.
 fn draw_finished(
     scene: &HostScene,
     settings: &Settings,
     finished: &Finished,
-    oled: &SimulatorDisplay<embedded_graphics::pixelcolor::Gray4>,
+    preview: &ui::preview::Preview,
     display: &mut SimulatorDisplay<EgRgb888>,
     panel: Point,
 ) {
@@ -327,10 +337,10 @@ fn draw_finished(
     } else {
         let _ = Text::with_baseline("O: overlay, plan view here", Point::new(left, panel.y), text, Baseline::Top).draw(display);
     }
-    ui::oled::draw(oled, display, panel + Point::new(1, 1));
+    ui::preview::draw(preview, display, panel + Point::new(1, 1));
     let s = &rendered.statistics;
     let lines = vec![
-        format!("OLED 128x64 preview (above)"),
+        format!("{} (above)", preview.kind.label()),
         format!("{}x{} {} {}", rendered.width(), rendered.height(), settings.number.name(), mode_name(settings.mode)),
         format!("opt {}", optimization_names(scene.optimizations)),
         format!("shadows {}  dither {}", on(scene.shadows), on(scene.dither)),
@@ -346,7 +356,7 @@ fn draw_finished(
             None => "progressive off".to_owned(),
         },
     ];
-    let y = panel.y + (ui::oled::HEIGHT as u32 * ui::oled::ZOOM) as i32 + 8;
+    let y = panel.y + preview.kind.shown_size().height as i32 + 8;
     ui::panel::draw(&lines, display, Point::new(panel.x, y));
 }
 

@@ -15,6 +15,7 @@ pub enum Action {
     ToggleOverlay,
     ToggleFill,
     ToggleProgressive,
+    CycleDisplay,
     SavePng,
     Quit,
 }
@@ -29,6 +30,7 @@ pub const HELP: &[(&str, &str)] = &[
     ("O", "overlay: extents, grid, plan"),
     ("F", "show Pixelbuffer fill"),
     ("C", "progressive (coarse-to-fine)"),
+    ("L", "cycle display preview"),
     ("P", "save PNG"),
     ("Q/Esc", "quit"),
 ];
@@ -46,6 +48,7 @@ pub fn action(key: Keycode) -> Option<Action> {
         Keycode::O => Action::ToggleOverlay,
         Keycode::F => Action::ToggleFill,
         Keycode::C => Action::ToggleProgressive,
+        Keycode::L => Action::CycleDisplay,
         Keycode::P => Action::SavePng,
         Keycode::Q | Keycode::Escape => Action::Quit,
         _ => return None,
