@@ -4,7 +4,9 @@
 
 use cortex_m_semihosting::{debug, syscall};
 
-/// SYS_OPEN modes (ISO C `fopen` modes by number): 1 = "rb", 5 = "wb".
+/// SYS_OPEN modes (ISO C `fopen` modes by number): 1 = "rb", 5 = "wb". Reading is only for
+/// the lm3s6965evb's screen capture (board/lm3s6965evb/mod.rs).
+#[cfg_attr(not(feature = "lm3s6965evb"), allow(dead_code))]
 const MODE_READ_BINARY: usize = 1;
 const MODE_WRITE_BINARY: usize = 5;
 
@@ -39,6 +41,7 @@ impl Drop for HostFile {
 }
 
 /// Whether the host has a readable file at `path` (NUL-terminated).
+#[cfg_attr(not(feature = "lm3s6965evb"), allow(dead_code))]
 pub fn host_file_exists(path: &[u8]) -> bool {
     debug_assert_eq!(path.last(), Some(&0));
     // SAFETY: as in `HostFile::create`.
