@@ -25,7 +25,10 @@ mod scene {
 use cortex_m_rt::{entry, exception};
 use embedded_graphics::prelude::Point;
 use microtrace::pixel::{FrameBuffer, GreyDrawTargetSink, PixelSink, PixelSource};
+#[cfg(not(feature = "progressive"))]
 use microtrace::render::{render_pga, Statistics};
+#[cfg(feature = "progressive")]
+use microtrace::render::{render_pga_progressive, PassStatistics};
 use microtrace::scene::Scene;
 
 use decimal::Decimal;
@@ -60,7 +63,7 @@ fn main() -> ! {
         framebuffer,
         display: display.map(|target| GreyDrawTargetSink { target, palette: &scene.palette, offset: Point::zero() }),
     };
-    let mut statistics = Statistics::default();
+    let mut statistics = Passes::default();
 
     measurement::microtrace_measure_render();
     render(scene, &mut sink, &mut statistics);
@@ -81,7 +84,7 @@ fn main() -> ! {
     report.integer("width", scene::WIDTH as u64);
     report.integer("height", scene::HEIGHT as u64);
     report.integer("objects", scene::OBJECT_COUNT as u64);
-    report.statistics(&statistics);
+    report_statistics(&mut report, &statistics);
     report.integer("stack_peak_bytes", stack_peak_bytes as u64);
     report.integer("stack_size_bytes", stack_size_bytes as u64);
     let Some(mut file) = HostFile::create(b"report.txt\0") else { fail("cannot create report.txt") };
@@ -110,11 +113,40 @@ fn prepare(scene: &'static mut PreparedScene) -> &'static PreparedScene {
     }
 }
 
+/// What the render counts: the statistics, and with the `progressive` feature each pass's.
+#[cfg(not(feature = "progressive"))]
+type Passes = Statistics;
+#[cfg(feature = "progressive")]
+type Passes = PassStatistics;
+
 /// The render, out of line like `prepare`: its per-render tables (shadow culling, about 2 KB for
 /// the lattice) are on the stack only while it runs, not under `prepare` as well.
 #[inline(never)]
-fn render<S: PixelSink<u8> + PixelSource<u8>>(scene: &PreparedScene, sink: &mut S, statistics: &mut Statistics) {
+#[cfg(not(feature = "progressive"))]
+fn render<S: PixelSink<u8> + PixelSource<u8>>(scene: &PreparedScene, sink: &mut S, statistics: &mut Passes) {
     render_pga(scene, sink, statistics);
+}
+
+/// The progressive render (the `progressive` feature): coarse to fine, each pass straight into
+/// the framebuffer and the display, flushed as each band of blocks is drawn.
+#[inline(never)]
+#[cfg(feature = "progressive")]
+fn render<S: PixelSink<u8> + PixelSource<u8>>(scene: &PreparedScene, sink: &mut S, statistics: &mut Passes) {
+    render_pga_progressive(scene, sink, statistics);
+}
+
+#[cfg(not(feature = "progressive"))]
+fn report_statistics(report: &mut report::Report, statistics: &Passes) {
+    report.statistics(statistics);
+}
+
+#[cfg(feature = "progressive")]
+fn report_statistics(report: &mut report::Report, statistics: &Passes) {
+    report.statistics(&statistics.total());
+    const KEYS: [&str; microtrace::render::PASSES] = ["pass1_rays_traced", "pass2_rays_traced", "pass3_rays_traced", "pass4_rays_traced"];
+    for (key, pass) in KEYS.iter().zip(&statistics.passes) {
+        report.integer(key, pass.rays_traced);
+    }
 }
 
 /// Reports `why` and ends the run with failure.

@@ -7,7 +7,7 @@ use std::time::{Duration, Instant};
 use anyhow::bail;
 use clap::ValueEnum;
 use microtrace::pixel::{FrameBuffer, Rgb888};
-use microtrace::render::{render_pga, render_pga_rows, render_rgb, render_rgb_rows, Statistics};
+use microtrace::render::{render_pga, render_pga_progressive, render_pga_rows, render_rgb, render_rgb_progressive, render_rgb_rows, PassStatistics, Statistics, PASSES};
 use microtrace::scene::{Scene, Viewport};
 use microtrace::shading::Palette;
 
@@ -37,6 +37,8 @@ pub struct Rendered {
     pub palette: Palette,
     pub pixels: Pixels,
     pub statistics: Statistics,
+    /// Each pass's statistics, for a progressive render (`statistics` is then their sum).
+    pub passes: Option<PassStatistics>,
     pub preprocess: Duration,
     pub trace: Duration,
 }
@@ -118,6 +120,43 @@ pub fn render_scene_on_threads(
             }
         };
         report.finish();
-        Ok(Rendered { viewport, palette: scene.palette, pixels, statistics, preprocess, trace: started.elapsed() })
+        Ok(Rendered { viewport, palette: scene.palette, pixels, statistics, passes: None, preprocess, trace: started.elapsed() })
+    })
+}
+
+/// Prepares and renders `scene` progressively on this thread (`microtrace::render`'s
+/// `render_pga_progressive`): coarse to fine in four passes, the same image as [`render_scene`],
+/// with each pass's statistics. Progress counts each row once per pass.
+pub fn render_scene_progressive(scene: &HostScene, number: NumberType, mode: Mode, progress: Option<&str>) -> anyhow::Result<Rendered> {
+    let viewport = scene.viewport;
+    let (width, height) = (viewport.width(), viewport.height());
+    let pixel_count = usize::from(width) * usize::from(height);
+    if pixel_count > 64 << 20 {
+        bail!("the viewport is {width}x{height}: too large to render in memory");
+    }
+    with_number_type!(number, N => {
+        let started = Instant::now();
+        let prepared = Box::new(Scene::<N, HOST_MAX_OBJECTS>::prepare(scene).map_err(anyhow::Error::new)?);
+        let preprocess = started.elapsed();
+        let mut report = ProgressReport::new(height.saturating_mul(PASSES as u16), progress.unwrap_or(""));
+        report.enabled &= progress.is_some();
+        let mut passes = PassStatistics::default();
+        let started = Instant::now();
+        let pixels = match mode {
+            Mode::Pga => {
+                let mut buffer = vec![0u8; pixel_count];
+                let frame = FrameBuffer::new(&mut buffer, width, height).expect("buffer sized to the viewport");
+                render_pga_progressive(&*prepared, &mut Progress::new(frame, &report), &mut passes);
+                Pixels::Pga(buffer)
+            }
+            Mode::Rgb => {
+                let mut buffer = vec![[0u8; 3]; pixel_count];
+                let frame = FrameBuffer::new(&mut buffer, width, height).expect("buffer sized to the viewport");
+                render_rgb_progressive(&*prepared, &mut Progress::new(frame, &report), &mut passes);
+                Pixels::Rgb(buffer)
+            }
+        };
+        report.finish();
+        Ok(Rendered { viewport, palette: scene.palette, pixels, statistics: passes.total(), passes: Some(passes), preprocess, trace: started.elapsed() })
     })
 }

@@ -161,3 +161,37 @@ fn zero_threads_is_a_clear_error() {
     assert!(text(&output.stderr).contains("at least 1"), "{}", text(&output.stderr));
     assert!(!image.exists());
 }
+
+#[test]
+fn progressive_renders_the_same_image_and_counts_each_pass() {
+    let directory = scratch("progressive");
+    for (scene, options) in [("scenes/snooker.mts", &["--size", "131x60"][..]), ("scenes/lattice.mts", &["--size", "100x61", "--mode", "rgb"])] {
+        let (normal_image, normal_json) = render_on_threads(&directory, scene, options, "1");
+        let rgb = options.contains(&"rgb");
+        let image = directory.join(if rgb { "progressive.rgb" } else { "progressive.pga" });
+        let json = directory.join("progressive.json");
+        let mut arguments = vec!["render", scene, "--progressive", "--stats", if rgb { "--rgb" } else { "--pga" }, image.to_str().unwrap()];
+        arguments.extend(["--stats-json", json.to_str().unwrap()]);
+        arguments.extend(options);
+        let output = microtrace(&arguments);
+        assert!(output.status.success(), "{arguments:?}: {}", text(&output.stderr));
+        assert!(std::fs::read(&image).unwrap() == normal_image, "{scene} {options:?}: --progressive renders a different image");
+        let json = std::fs::read_to_string(&json).unwrap();
+        for key in ["pixels", "rays_traced", "rays_intersected", "shadow_rays"] {
+            assert_eq!(statistic(&json, key), statistic(&normal_json, key), "{scene}: {key}");
+        }
+        // Each pass's counts, in order 8, 4, 2, 1; their rays add up to the whole render's.
+        let passes = &json[json.find("\"passes\"").expect("passes in the JSON")..];
+        let each: Vec<&str> = passes.split("{\"block\"").skip(1).collect();
+        assert_eq!(each.len(), 4, "{passes}");
+        let blocks: Vec<u64> = each.iter().map(|pass| pass[2..pass.find(',').unwrap()].parse().unwrap()).collect();
+        assert_eq!(blocks, [8, 4, 2, 1]);
+        let rays: Vec<u64> = each.iter().map(|pass| statistic(pass, "rays_traced")).collect();
+        assert_eq!(rays.iter().sum::<u64>(), statistic(&json, "rays_traced"));
+        assert!(rays[0] > 0 && rays[0] * 10 < rays[3], "{rays:?}: the first pass traces about one pixel in 64, the last 3 in 4");
+        let stderr = text(&output.stderr);
+        assert!(stderr.contains(&format!("pass 1 (8x8)    {} rays", rays[0])) && stderr.contains("pass 4 (1x1)"), "{stderr}");
+    }
+    let output = microtrace(&["render", "scenes/snooker.mts", "--progressive", "--threads", "2", "--stats"]);
+    assert!(!output.status.success(), "--progressive with --threads is refused");
+}

@@ -280,3 +280,28 @@ fn the_linked_audit_agrees_with_llvm_nm() {
         assert!(text.contains(&symbol.demangled), "linked-audit.txt lacks {}", symbol.demangled);
     }
 }
+
+/// The firmware's progressive build (`cargo xtask firmware --progressive`) ends with the host's
+/// normal render, in the framebuffer and on the OLED, with the same statistics; its report says
+/// how many rays each pass traced, and they add up to the whole render's.
+#[test]
+fn progressive_firmware_on_lm3s6965evb_ends_with_the_host_image() {
+    let (description, expected, statistics) = host_render("snooker.mts");
+    let out = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("firmware/lm3s6965evb-snooker-f32-progressive");
+    let mut options = FirmwareOptions::new(scene_path("snooker.mts"), Board::Lm3s6965evb, "f32", out);
+    options.progressive = true;
+    let run = firmware::run(&options).unwrap_or_else(|error| panic!("progressive snooker: {error}"));
+    println!("{}", firmware::summary(&run, &options));
+    assert_eq!(std::fs::read(&run.framebuffer).unwrap(), expected, "the progressive framebuffer differs from the host render");
+    let numbers = &run.numbers;
+    assert_eq!(numbers["pixels"], statistics.pixels);
+    assert_eq!(numbers["rays_traced"], statistics.rays_traced);
+    assert_eq!(numbers["rays_intersected"], statistics.rays_intersected);
+    let passes = ["pass1_rays_traced", "pass2_rays_traced", "pass3_rays_traced", "pass4_rays_traced"].map(|key| numbers[key]);
+    assert_eq!(passes.iter().sum::<u64>(), statistics.rays_traced, "{passes:?}");
+    assert!(passes[0] > 0 && passes[0] * 8 < passes[3], "{passes:?}");
+    linked_code_is_clean("snooker.mts progressive", Board::Lm3s6965evb, numbers);
+    let oled = xtask::oled::read_png(run.oled_png.as_ref().unwrap()).unwrap();
+    let expected_greys: Vec<u8> = expected.iter().map(|index| microtrace::pixel::grey_level(&description.palette, *index).luma() * 17).collect();
+    assert!(oled.pixels == expected_greys, "the OLED after the progressive render differs from the framebuffer's luminance");
+}

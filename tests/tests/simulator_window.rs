@@ -135,6 +135,83 @@ fn window_shows_the_same_image_as_render() {
     check_scene(&binary, &display, "snooker", &["--number", "f32", "--opt", "none", "--dither", "on"]);
 }
 
+/// `view --progressive` (coarse to fine, straight into the window) ends with the same window
+/// image as the plain `view`, and reports each pass's rays in the panel's statistics on stderr.
+#[test]
+fn progressive_view_ends_with_the_same_image() {
+    let Some((display, _xvfb)) = display_or_skip() else { return };
+    let binary = microtrace_binary();
+    for scene in ["snooker", "lattice"] {
+        let ((width, height, plain), _) = screenshot_and_stderr(&binary, &display, scene, &[]);
+        let ((progressive_width, _, progressive), stderr) = screenshot_and_stderr(&binary, &display, scene, &["--progressive"]);
+        assert_eq!(width, progressive_width);
+        let image_area = |window: &[[u8; 3]]| (0..120).flat_map(|y| (0..132).map(move |x| (y * width + x) as usize)).map(|i| window[i]).collect::<Vec<_>>();
+        assert!(image_area(&plain) == image_area(&progressive), "{scene}: the progressive view's image differs");
+        assert!(height >= 120 && plain != progressive, "{scene}: the panel should say progressive");
+        assert!(stderr.contains("pass 1 (8x8)") && stderr.contains("pass 4 (1x1)"), "{stderr}");
+    }
+}
+
+/// Each display preview (`--display oled|ssd1306|rgb565`, which `L` cycles) shows, pixel for
+/// pixel, the core's image of the scene fitted to that display through the firmware's mapping:
+/// the look-up table's grey (`grey_level`) on the 16-grey OLED, that grey through the 4x4
+/// ordered dither (`dither_lights`) on the 1-bit SSD1306, the look-up table's colour in RGB565
+/// (`lut_colour::<Rgb565>`) on the colour panel.
+#[test]
+fn each_display_preview_shows_the_core_image_through_its_mapping() {
+    use embedded_graphics::pixelcolor::{GrayColor, Rgb565, Rgb888, RgbColor};
+    use embedded_graphics::prelude::Point;
+    use microtrace::pixel::{dither_lights, grey_level, lut_colour, FrameBuffer};
+    let Some((display, _xvfb)) = display_or_skip() else { return };
+    let binary = microtrace_binary();
+    for scene in ["snooker", "lattice"] {
+        let text = std::fs::read(workspace().join("scenes").join(format!("{scene}.mts"))).unwrap();
+        let mut description = microtrace::parser::parse::<64>(&text).unwrap();
+        description.fit_to_size(132, 120);
+        for (kind, width, height, zoom) in [("oled", 128u16, 64u16, 2u32), ("ssd1306", 128, 64, 2), ("rgb565", 240, 240, 1)] {
+            let mut fitted = description.clone();
+            fitted.fit_to_size(width, height);
+            let prepared = microtrace::scene::Scene::<f64, 64>::prepare(&fitted).unwrap();
+            let mut indices = vec![0u8; usize::from(width) * usize::from(height)];
+            microtrace::render::render_pga(&prepared, &mut FrameBuffer::new(&mut indices, width, height).unwrap(), &mut microtrace::render::Statistics::default());
+            let palette = &fitted.palette;
+            let expected: Vec<[u8; 3]> = indices
+                .iter()
+                .enumerate()
+                .map(|(i, index)| {
+                    let point = Point::new((i % usize::from(width)) as i32, (i / usize::from(width)) as i32);
+                    let grey = grey_level(palette, *index).luma();
+                    match kind {
+                        "oled" => [grey * 17; 3],
+                        "ssd1306" => if dither_lights(grey, point) { [255; 3] } else { [0; 3] },
+                        _ => {
+                            let colour = Rgb888::from(lut_colour::<Rgb565>(palette, *index));
+                            [colour.r(), colour.g(), colour.b()]
+                        }
+                    }
+                })
+                .collect();
+            let distinct: std::collections::BTreeSet<[u8; 3]> = expected.iter().copied().collect();
+            assert!(distinct.len() >= 2, "{scene} {kind}: the expected preview is blank");
+            let (window_width, window_height, window) = screenshot(&binary, &display, scene, &["--display", kind]);
+            // The preview is at the panel's top left, inside a one-pixel frame: the panel starts
+            // 8 pixels right of the 132-pixel image, 4 down.
+            let origin = (132 + 8 + 1, 4 + 1);
+            assert!(origin.0 + u32::from(width) * zoom <= window_width && origin.1 + u32::from(height) * zoom <= window_height);
+            let mut differing = 0;
+            for y in 0..u32::from(height) * zoom {
+                for x in 0..u32::from(width) * zoom {
+                    let shown = window[((origin.1 + y) * window_width + origin.0 + x) as usize];
+                    if shown != expected[((y / zoom) * u32::from(width) + x / zoom) as usize] {
+                        differing += 1;
+                    }
+                }
+            }
+            assert_eq!(differing, 0, "{scene} {kind}: {differing} window pixels of the preview differ from the core's image through the mapping");
+        }
+    }
+}
+
 /// Runs `microtrace view SCENE --size 132x120 --screenshot` with `extra` and returns the
 /// screenshot.
 fn screenshot(binary: &Path, display: &str, scene: &str, extra: &[&str]) -> (u32, u32, Vec<[u8; 3]>) {

@@ -116,6 +116,8 @@ pub struct FirmwareOptions {
     /// `scene` (keep the scene's `optimize`), `all`, `none`, or a comma list.
     pub optimizations: String,
     pub primitives: Primitives,
+    /// Build with the firmware's `progressive` feature: the render traces coarse to fine.
+    pub progressive: bool,
     pub out: PathBuf,
     pub timeout: Duration,
     /// Build the fault test and provoke this fault (the run then fails, saying what happened).
@@ -133,6 +135,7 @@ impl FirmwareOptions {
             board,
             optimizations: "scene".to_owned(),
             primitives: Primitives::Scene,
+            progressive: false,
             out: out.into(),
             timeout: Duration::from_secs(300),
             provoke: None,
@@ -252,6 +255,9 @@ pub fn run(options: &FirmwareOptions) -> Result<FirmwareRun, String> {
     names.insert("scene", scene.file_name().map(|name| name.to_string_lossy().into_owned()).unwrap_or_default());
     names.insert("optimizations", options.optimizations.clone());
     names.insert("primitives", options.primitives.name().to_owned());
+    if options.progressive {
+        names.insert("display", "progressive".to_owned());
+    }
     let report_json = out.join("report.json");
     std::fs::write(&report_json, json(&names, &integers)).map_err(|error| format!("{}: {error}", report_json.display()))?;
     let _ = std::fs::remove_file(out.join("report.txt"));
@@ -328,6 +334,9 @@ fn build(options: &FirmwareOptions, scene: &Path, primitive_features: &[&str]) -
     let mut features = vec![options.board.name()];
     features.extend_from_slice(primitive_features);
     features.extend(number_feature(&options.number));
+    if options.progressive {
+        features.push("progressive");
+    }
     let output = Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
         .args(["build", "--release", "--quiet", "--no-default-features"])
         .args(["--features", &features.join(",")])
@@ -474,6 +483,15 @@ pub fn summary(run: &FirmwareRun, options: &FirmwareOptions) -> String {
         get("shadow_rays"),
         get("shadow_tests")
     );
+    if options.progressive {
+        text += &format!(
+            "progressive: rays traced per pass (8x8, 4x4, 2x2, 1x1) {}, {}, {}, {}\n",
+            get("pass1_rays_traced"),
+            get("pass2_rays_traced"),
+            get("pass3_rays_traced"),
+            get("pass4_rays_traced")
+        );
+    }
     for (what, symbols) in [("f64 routines", &run.audit.f64), ("panic symbols", &run.audit.panic), ("core::fmt symbols", &run.audit.fmt)] {
         let names: Vec<&str> = symbols.iter().map(|symbol| symbol.demangled.as_str()).collect();
         text += &format!("linked: {} {what}{}{}\n", names.len(), if names.is_empty() { "" } else { ": " }, names.join(", "));

@@ -10,13 +10,15 @@ fn usage() -> &'static str {
     "usage:
   cargo xtask firmware [--scene FILE] [--board lm3s6965evb|mps2-an386] [--number f64|f32|fixed|fixed16|f32-micromath|soft32]
                        [--opt scene|all|none|pixelbuffer,extents,grid,sortlist] [--out DIR]
-                       [--timeout SECONDS] [--stack-reserve BYTES]
+                       [--timeout SECONDS] [--stack-reserve BYTES] [--progressive]
                        [--provoke panic|hard-fault|unexpected-interrupt|stack-overflow]
       Builds the firmware for the scene (default scenes/snooker.mts), runs it under QEMU and
       leaves framebuffer.bin, oled.png (lm3s6965evb) and report.json in DIR
       (default firmware/target/run/BOARD-SCENE-NUMBER). --provoke builds the fault test, which
       does that before preparing the scene: the run fails with the firmware's message.
       --stack-reserve: the stack the build's RAM check keeps free (default 12288).
+      --progressive renders coarse to fine (8x8 blocks, then 4x4, 2x2, every pixel): the same
+      image, the rays of each pass reported.
   cargo xtask firmware-example
       Builds (does not run) the real-board examples in firmware/examples/
       (Raspberry Pi Pico + SSD1306, Raspberry Pi Pico + ST7789).
@@ -84,6 +86,7 @@ fn firmware_task(arguments: &[String]) -> Result<(), String> {
     let mut timeout = Duration::from_secs(300);
     let mut provoke = None;
     let mut stack_reserve = None;
+    let mut progressive = false;
     let mut rest = arguments.iter();
     while let Some(flag) = rest.next() {
         let mut value = || rest.next().cloned().ok_or_else(|| format!("{flag} needs a value\n{}", usage()));
@@ -96,6 +99,7 @@ fn firmware_task(arguments: &[String]) -> Result<(), String> {
             "--number" => number = value()?,
             "--opt" => optimizations = value()?,
             "--out" => out = Some(PathBuf::from(value()?)),
+            "--progressive" => progressive = true,
             "--timeout" => {
                 let seconds = value()?;
                 timeout = Duration::from_secs(seconds.parse().map_err(|_| format!("--timeout {seconds}: not a number of seconds"))?);
@@ -124,6 +128,7 @@ fn firmware_task(arguments: &[String]) -> Result<(), String> {
     options.timeout = timeout;
     options.provoke = provoke;
     options.stack_reserve = stack_reserve;
+    options.progressive = progressive;
     let run = firmware::run(&options)?;
     println!("{}", firmware::summary(&run, &options));
     Ok(())

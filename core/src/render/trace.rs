@@ -123,14 +123,14 @@ pub const RGB_FILL: [u8; 3] = [112, 0, 255];
 const READ_CHUNK: usize = 32;
 
 /// A mode's pixels: a surface's own (the thesis's shading) and the ray tree's node colours.
-trait Mode<N>: NodeColours<N> {
+pub(crate) trait Mode<N>: NodeColours<N> {
     fn surface(&self, material: &PreparedMaterial<N>, lighting: Lighting<N>, pixel: PixelPosition) -> Self::Pixel;
 }
 
 /// PGA mode: a surface's palette index; a tree's node is its index's LUT colour, and a mixed
 /// pixel the LUT entry nearest the mix (scene format, chapter 5).
-struct PgaNodes<'a, N, const MAX_OBJECTS: usize> {
-    scene: &'a Scene<N, MAX_OBJECTS>,
+pub(crate) struct PgaNodes<'a, N, const MAX_OBJECTS: usize> {
+    pub scene: &'a Scene<N, MAX_OBJECTS>,
 }
 
 impl<N: Number, const MAX_OBJECTS: usize> NodeColours<N> for PgaNodes<'_, N, MAX_OBJECTS> {
@@ -159,8 +159,8 @@ impl<N: Number, const MAX_OBJECTS: usize> Mode<N> for PgaNodes<'_, N, MAX_OBJECT
 }
 
 /// RGB mode: the channels' intensities, clamped and rounded (or dithered) once at the end.
-struct RgbNodes<'a, N, const MAX_OBJECTS: usize> {
-    scene: &'a Scene<N, MAX_OBJECTS>,
+pub(crate) struct RgbNodes<'a, N, const MAX_OBJECTS: usize> {
+    pub scene: &'a Scene<N, MAX_OBJECTS>,
 }
 
 impl<N: Number, const MAX_OBJECTS: usize> NodeColours<N> for RgbNodes<'_, N, MAX_OBJECTS> {
@@ -185,7 +185,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Mode<N> for RgbNodes<'_, N, MAX_OBJECT
 /// One pixel: the primary hit's own shade, or, when the ray tree spawns rays from it, the
 /// tree's mix (a tree at most `DEPTH` generations deep).
 #[inline]
-fn pixel_value<N, M, const MAX_OBJECTS: usize, const DEPTH: usize>(
+pub(crate) fn pixel_value<N, M, const MAX_OBJECTS: usize, const DEPTH: usize>(
     scene: &Scene<N, MAX_OBJECTS>,
     mode: &M,
     pixel: PixelPosition,
@@ -355,7 +355,7 @@ where
 /// overlapping pairs (`optimize::shadow::blocker_table`). Without the `acceleration-tables`
 /// feature there are none.
 #[cfg(feature = "acceleration-tables")]
-fn with_shadow_culling<N: Number, R, const MAX_OBJECTS: usize>(
+pub(crate) fn with_shadow_culling<N: Number, R, const MAX_OBJECTS: usize>(
     scene: &Scene<N, MAX_OBJECTS>,
     body: impl FnOnce(&[ShadowCulling<'_, N>]) -> R,
 ) -> R {
@@ -432,7 +432,7 @@ fn build_shadow_tables<N: Number, const MAX_OBJECTS: usize>(
 }
 
 #[cfg(not(feature = "acceleration-tables"))]
-fn with_shadow_culling<N: Number, R, const MAX_OBJECTS: usize>(
+pub(crate) fn with_shadow_culling<N: Number, R, const MAX_OBJECTS: usize>(
     _scene: &Scene<N, MAX_OBJECTS>,
     body: impl FnOnce(&[ShadowCulling<'_, N>]) -> R,
 ) -> R {

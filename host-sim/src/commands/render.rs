@@ -9,7 +9,8 @@ use microtrace::scene::Optimizations;
 
 use crate::files;
 use crate::number_type::NumberType;
-use crate::rendering::{render_scene_on_threads, Mode, Pixels, Rendered};
+use crate::rendering::{render_scene_on_threads, render_scene_progressive, Mode, Pixels, Rendered};
+use microtrace::render::PASS_SIZES;
 use crate::scene_file::{self, parse_optimizations, parse_size, parse_switch};
 
 #[derive(clap::Args, Clone, Debug)]
@@ -59,6 +60,10 @@ pub struct RenderArgs {
     /// single-threaded render; with more the image is the same, the statistics the sum over bands.
     #[arg(long, value_name = "N", value_parser = parse_threads)]
     pub threads: Option<NonZeroUsize>,
+    /// Trace coarse to fine, as on a slow chip: one pixel of each 8x8 block drawn as the block,
+    /// then 4x4, 2x2 and every pixel (one thread). The same image; the statistics per pass.
+    #[arg(long, conflicts_with = "threads")]
+    pub progressive: bool,
 }
 
 /// Parses a thread count of at least 1.
@@ -86,7 +91,12 @@ pub fn run(args: RenderArgs) -> anyhow::Result<()> {
     apply_overrides(&mut scene, &args);
     let label = format!("rendering {}", args.scene.display());
     let threads = args.threads.unwrap_or_else(default_threads);
-    let rendered = render_scene_on_threads(&scene, args.number, args.mode, Some(&label), threads)
+    let rendered = if args.progressive {
+        render_scene_progressive(&scene, args.number, args.mode, Some(&label))
+    } else {
+        render_scene_on_threads(&scene, args.number, args.mode, Some(&label), threads)
+    };
+    let rendered = rendered
         .map_err(|error| match error.downcast::<microtrace::parser::SceneError>() {
             Ok(error) => scene_file::SceneFileError { path: args.scene.clone(), error }.into(),
             Err(other) => other.context(format!("cannot render {}", args.scene.display())),
@@ -144,11 +154,29 @@ fn write_outputs(args: &RenderArgs, rendered: &Rendered) -> anyhow::Result<()> {
 }
 
 /// The statistics as JSON with the keys of Table 4.2 (and the shadow counts).
+/// A progressive render adds `passes`: each pass's block size and counts.
 pub fn statistics_json(rendered: &Rendered) -> String {
     let s = &rendered.statistics;
+    let passes = match &rendered.passes {
+        None => String::new(),
+        Some(passes) => {
+            let each: Vec<String> = passes
+                .passes
+                .iter()
+                .zip(PASS_SIZES)
+                .map(|(p, size)| {
+                    format!(
+                        "{{\"block\": {size}, \"pixels\": {}, \"rays_traced\": {}, \"rays_intersected\": {}, \"ro_tests\": {}, \"shadow_rays\": {}}}",
+                        p.pixels, p.rays_traced, p.rays_intersected, p.ro_tests, p.shadow_rays
+                    )
+                })
+                .collect();
+            format!(", \"passes\": [{}]", each.join(", "))
+        }
+    };
     format!(
         "{{\"pixels\": {}, \"rays_traced\": {}, \"rays_intersected\": {}, \"ro_tests\": {}, \"ro_hits\": {}, \
-         \"shadow_rays\": {}, \"shadow_tests\": {}, \"preprocess_ms\": {:.3}, \"trace_ms\": {:.3}}}\n",
+         \"shadow_rays\": {}, \"shadow_tests\": {}, \"preprocess_ms\": {:.3}, \"trace_ms\": {:.3}{passes}}}\n",
         s.pixels,
         s.rays_traced,
         s.rays_intersected,
@@ -161,8 +189,19 @@ pub fn statistics_json(rendered: &Rendered) -> String {
     )
 }
 
-/// Table 4.2's figures as the thesis defines them (digest §9.1).
+/// Table 4.2's figures as the thesis defines them (digest §9.1); for a progressive render,
+/// then the rays each pass traced.
 pub fn statistics_table(rendered: &Rendered) -> String {
+    let mut table = thesis_table(rendered);
+    if let Some(passes) = &rendered.passes {
+        for (pass, (p, size)) in passes.passes.iter().zip(PASS_SIZES).enumerate() {
+            table += &format!("pass {} ({size}x{size})    {} rays, {} pixels\n", pass + 1, p.rays_traced, p.pixels);
+        }
+    }
+    table
+}
+
+fn thesis_table(rendered: &Rendered) -> String {
     let s = &rendered.statistics;
     let percent = |part: u64, whole: u64| if whole == 0 { 0.0 } else { 100.0 * part as f64 / whole as f64 };
     let per = |part: u64, whole: u64| if whole == 0 { 0.0 } else { part as f64 / whole as f64 };

@@ -2,7 +2,8 @@
 //!
 //! The image is traced by the same core through the same `PixelSink`/`PixelSource` path as the
 //! firmware and appears row by row from the top; the panel shows the settings, the statistics
-//! and the render time, the key help, and a preview of the firmware's 128x64 grey OLED. The
+//! and the render time, the key help, and a preview of a display the firmware drives (the
+//! 128x64 grey OLED, a 1-bit SSD1306 through the dither, a 240x240 RGB565 panel). The
 //! overlay draws what the optimizations see: extents and grid cells on the image, and beside
 //! the panel a plan view of the bounding volumes with Sortlist's depth ranges.
 
@@ -18,7 +19,7 @@ use embedded_graphics::primitives::Rectangle;
 use embedded_graphics::text::{Baseline, Text};
 use embedded_graphics_simulator::{OutputSettings, OutputSettingsBuilder, SimulatorDisplay, SimulatorEvent};
 use microtrace::pixel::FrameBuffer;
-use microtrace::render::{render_pga, render_rgb, Statistics};
+use microtrace::render::{render_pga, render_pga_progressive, render_rgb, render_rgb_progressive, PassStatistics, Statistics};
 use microtrace::scene::{Optimizations, Scene};
 
 use crate::commands::render::statistics_table;
@@ -35,6 +36,7 @@ use ui::keys::{self, Action};
 use ui::fill::PixelbufferFill;
 use ui::overlay::ScreenExtent;
 use ui::plan::PlanView;
+use ui::preview::DisplayKind;
 use ui::window::View;
 
 #[derive(clap::Args, Clone, Debug)]
@@ -68,6 +70,12 @@ pub struct ViewArgs {
     /// Start with the pixels the Pixelbuffer's fill marks tinted (F toggles it).
     #[arg(long)]
     pub fill: bool,
+    /// Trace coarse to fine: 8x8 blocks, then 4x4, 2x2 and every pixel (C toggles it).
+    #[arg(long)]
+    pub progressive: bool,
+    /// The display previewed beside the image (L cycles them).
+    #[arg(long, value_enum, default_value = "oled")]
+    pub display: DisplayKind,
     /// Render fully, save the finished window (image, overlay, panel) to FILE.png and exit.
     #[arg(long, value_name = "FILE.png")]
     pub screenshot: Option<PathBuf>,
@@ -82,6 +90,8 @@ struct Settings {
     mode: Mode,
     overlay: bool,
     fill: bool,
+    progressive: bool,
+    display: DisplayKind,
 }
 
 /// One finished render: the image, its statistics and what the overlay draws.
@@ -117,14 +127,14 @@ pub fn run(args: ViewArgs) -> anyhow::Result<()> {
     }
     let (width, height) = (u32::from(scene.viewport.width()), u32::from(scene.viewport.height()));
     let panel_x = width + 8;
-    let panel_height = ui::oled::HEIGHT as u32 * ui::oled::ZOOM + 12 + ui::panel::height(PANEL_LINES);
+    let panel_height = DisplayKind::tallest() + 12 + ui::panel::height(PANEL_LINES);
     let plan_height = PLAN_TOP + ui::plan::HEIGHT + 8 + ui::depth_ranges::height(scene.objects.len()) + 4;
     let window_size = Size::new(panel_x + ui::panel::WIDTH + ui::plan::WIDTH + 8, height.max(panel_height).max(plan_height));
     let mut display = SimulatorDisplay::<EgRgb888>::new(window_size);
     let output = OutputSettingsBuilder::new().scale(args.scale).build();
     let title = format!("MicroTrace — {}", args.scene.display());
     let mut view = View::open(&title, &output, &display)?;
-    let mut settings = Settings { number: args.number, mode: args.mode, overlay: args.overlay, fill: args.fill };
+    let mut settings = Settings { number: args.number, mode: args.mode, overlay: args.overlay, fill: args.fill, progressive: args.progressive, display: args.display };
 
     loop {
         let finished = render(&scene, &settings, &mut display, &mut view).map_err(|error| scene_file::in_file(&args.scene, error))?;
@@ -137,8 +147,8 @@ pub fn run(args: ViewArgs) -> anyhow::Result<()> {
             mode_name(settings.mode),
             optimization_names(scene.optimizations)
         );
-        let oled = ui::oled::render(&scene, settings.number).map_err(|error| scene_file::in_file(&args.scene, error))?;
-        draw_finished(&scene, &settings, &finished, &oled, &mut display, Point::new(panel_x as i32, 4));
+        let mut preview = ui::preview::render(&scene, settings.number, settings.display).map_err(|error| scene_file::in_file(&args.scene, error))?;
+        draw_finished(&scene, &settings, &finished, &preview, &mut display, Point::new(panel_x as i32, 4));
         view.update(&display);
         if let Some(path) = &args.screenshot {
             display
@@ -174,13 +184,18 @@ pub fn run(args: ViewArgs) -> anyhow::Result<()> {
                     Action::SwitchMode => settings.mode = if settings.mode == Mode::Pga { Mode::Rgb } else { Mode::Pga },
                     Action::ToggleDither => scene.dither = !scene.dither,
                     Action::ToggleShadows => scene.shadows = !scene.shadows,
-                    Action::ToggleOverlay | Action::ToggleFill => {
-                        if action == Action::ToggleOverlay {
-                            settings.overlay = !settings.overlay;
-                        } else {
-                            settings.fill = !settings.fill;
+                    Action::ToggleProgressive => settings.progressive = !settings.progressive,
+                    Action::ToggleOverlay | Action::ToggleFill | Action::CycleDisplay => {
+                        match action {
+                            Action::ToggleOverlay => settings.overlay = !settings.overlay,
+                            Action::ToggleFill => settings.fill = !settings.fill,
+                            _ => {
+                                settings.display = settings.display.next();
+                                preview = ui::preview::render(&scene, settings.number, settings.display)
+                                    .map_err(|error| scene_file::in_file(&args.scene, error))?;
+                            }
                         }
-                        draw_finished(&scene, &settings, &finished, &oled, &mut display, Point::new(panel_x as i32, 4));
+                        draw_finished(&scene, &settings, &finished, &preview, &mut display, Point::new(panel_x as i32, 4));
                         continue;
                     }
                     Action::SavePng => {
@@ -258,34 +273,45 @@ fn render(scene: &HostScene, settings: &Settings, display: &mut SimulatorDisplay
         let plan = PlanView::of(&*prepared);
         let fill = PixelbufferFill::record(&*prepared);
         let mut statistics = Statistics::default();
+        // Progressive: the passes go straight to the window, each drawn as it finishes.
+        let mut passes = settings.progressive.then(PassStatistics::default);
         let started = Instant::now();
         let pixels = match settings.mode {
             Mode::Pga => {
                 let mut buffer = vec![0u8; count];
                 let frame = FrameBuffer::new(&mut buffer, width, height).expect("buffer sized to the viewport");
                 let mut sink = ui::sink::WindowSink::new(frame, display, &palette, Some(view));
-                render_pga(&*prepared, &mut sink, &mut statistics);
+                match &mut passes {
+                    Some(passes) => render_pga_progressive(&*prepared, &mut sink, passes),
+                    None => render_pga(&*prepared, &mut sink, &mut statistics),
+                }
                 Pixels::Pga(buffer)
             }
             Mode::Rgb => {
                 let mut buffer = vec![[0u8; 3]; count];
                 let frame = FrameBuffer::new(&mut buffer, width, height).expect("buffer sized to the viewport");
                 let mut sink = ui::sink::WindowSink::new(frame, display, &palette, Some(view));
-                render_rgb(&*prepared, &mut sink, &mut statistics);
+                match &mut passes {
+                    Some(passes) => render_rgb_progressive(&*prepared, &mut sink, passes),
+                    None => render_rgb(&*prepared, &mut sink, &mut statistics),
+                }
                 Pixels::Rgb(buffer)
             }
         };
+        if let Some(passes) = &passes {
+            statistics = passes.total();
+        }
         let trace = started.elapsed();
-        Ok(Finished { rendered: Rendered { viewport, palette, pixels, statistics, preprocess, trace }, extents, grid, plan, fill })
+        Ok(Finished { rendered: Rendered { viewport, palette, pixels, statistics, passes, preprocess, trace }, extents, grid, plan, fill })
     })
 }
 
-/// Redraws the image (with the overlay if on), the OLED preview and the panel.
+/// Redraws the image (with the overlay if on), the display preview and the panel.
 fn draw_finished(
     scene: &HostScene,
     settings: &Settings,
     finished: &Finished,
-    oled: &SimulatorDisplay<embedded_graphics::pixelcolor::Gray4>,
+    preview: &ui::preview::Preview,
     display: &mut SimulatorDisplay<EgRgb888>,
     panel: Point,
 ) {
@@ -311,10 +337,10 @@ fn draw_finished(
     } else {
         let _ = Text::with_baseline("O: overlay, plan view here", Point::new(left, panel.y), text, Baseline::Top).draw(display);
     }
-    ui::oled::draw(oled, display, panel + Point::new(1, 1));
+    ui::preview::draw(preview, display, panel + Point::new(1, 1));
     let s = &rendered.statistics;
     let lines = vec![
-        format!("OLED 128x64 preview (above)"),
+        format!("{} (above)", preview.kind.label()),
         format!("{}x{} {} {}", rendered.width(), rendered.height(), settings.number.name(), mode_name(settings.mode)),
         format!("opt {}", optimization_names(scene.optimizations)),
         format!("shadows {}  dither {}", on(scene.shadows), on(scene.dither)),
@@ -325,13 +351,17 @@ fn draw_finished(
         format!("ray-object tests {}", s.ro_tests),
         format!("ray-object hits  {}", s.ro_hits),
         format!("shadow rays {} tests {}", s.shadow_rays, s.shadow_tests),
+        match &rendered.passes {
+            Some(passes) => format!("progressive, rays {}", passes.passes.map(|p| p.rays_traced.to_string()).join("/")),
+            None => "progressive off".to_owned(),
+        },
     ];
-    let y = panel.y + (ui::oled::HEIGHT as u32 * ui::oled::ZOOM) as i32 + 8;
+    let y = panel.y + preview.kind.shown_size().height as i32 + 8;
     ui::panel::draw(&lines, display, Point::new(panel.x, y));
 }
 
 /// Lines of text in the panel above the key help.
-const PANEL_LINES: usize = 11;
+const PANEL_LINES: usize = 12;
 /// Top of the plan view's drawing area (below its title).
 const PLAN_TOP: u32 = 4 + 12;
 

@@ -14,6 +14,8 @@ pub enum Action {
     ToggleShadows,
     ToggleOverlay,
     ToggleFill,
+    ToggleProgressive,
+    CycleDisplay,
     SavePng,
     Quit,
 }
@@ -27,6 +29,8 @@ pub const HELP: &[(&str, &str)] = &[
     ("S", "shadows on/off"),
     ("O", "overlay: extents, grid, plan"),
     ("F", "show Pixelbuffer fill"),
+    ("C", "progressive (coarse-to-fine)"),
+    ("L", "cycle display preview"),
     ("P", "save PNG"),
     ("Q/Esc", "quit"),
 ];
@@ -43,6 +47,8 @@ pub fn action(key: Keycode) -> Option<Action> {
         Keycode::S => Action::ToggleShadows,
         Keycode::O => Action::ToggleOverlay,
         Keycode::F => Action::ToggleFill,
+        Keycode::C => Action::ToggleProgressive,
+        Keycode::L => Action::CycleDisplay,
         Keycode::P => Action::SavePng,
         Keycode::Q | Keycode::Escape => Action::Quit,
         _ => return None,

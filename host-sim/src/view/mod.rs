@@ -4,7 +4,7 @@ pub mod colours;
 pub mod depth_ranges;
 pub mod fill;
 pub mod keys;
-pub mod oled;
+pub mod preview;
 pub mod overlay;
 pub mod panel;
 pub mod plan;

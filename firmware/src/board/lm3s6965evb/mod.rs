@@ -9,13 +9,16 @@ pub use ssd0323::Ssd0323;
 
 use crate::semihosting;
 
-/// The display the render shows its rows on.
-pub type Display = Ssd0323;
+/// The display the render shows its rows on: the SSD0323 driver over this board's SSI0 (an
+/// `embedded-hal` `SpiBus`) with the OLED's select line PD0 (a `SpiDevice`), and PC7 as its
+/// data/command `OutputPin`.
+pub type Display = Ssd0323<spi::SelectedDevice<spi::Ssi0, spi::GpioOutput>, spi::GpioOutput>;
 
-/// Brings up the OLED, cleared.
+/// Brings up the OLED, cleared (none if it does not answer).
 pub fn init() -> Option<Display> {
     let screen = cortex_m::singleton!(: ssd0323::ScreenCopy = [[0; 64]; ssd0323::HEIGHT])?;
-    Some(Ssd0323::new(spi::OledSpi::new(), screen))
+    let device = spi::SelectedDevice::new(spi::Ssi0::new(), spi::oled_select());
+    Ssd0323::new(device, spi::oled_data_command(), screen).ok()
 }
 
 /// Files that `cargo xtask firmware` uses to capture the screen before the firmware exits

@@ -1,0 +1,213 @@
+//! Progressive display for slow chips: the image traced coarse to fine, so that the whole
+//! picture shows early on a chip that takes seconds per frame.
+//!
+//! Four passes, of block size 8, 4, 2 and 1 ([`PASS_SIZES`]). Pass 0 traces the pixel at the
+//! top left of every 8x8 block (columns and rows that are multiples of 8) and draws it as the
+//! whole block; pass `k` traces the pixels whose column and row are multiples of its size `s`
+//! but not both multiples of `2s` (the ones no earlier pass traced) and draws each as an `s`x`s`
+//! block. Every pixel is traced exactly once over the four passes, and a pass's blocks cover
+//! only pixels not yet traced: the blocks of size `s` tile the image, and the only traced pixel
+//! inside one is its own top left corner. So every pixel is last written with its own value, and
+//! the final image is the normal render's ([`super::render_pga`]), byte for byte.
+//!
+//! The pixels go straight to the sink (`fill_row` for a block's rows, `set_pixel` in the last
+//! pass): it can be a display's own RAM, with no second framebuffer, and it is never read back.
+//! The optimizations apply as in the normal render: Extents, Grid and Sortlist through the same
+//! per-pixel shading, and Pixelbuffer as a per-pixel coverage test (the same fill
+//! ([`super::fill_volumes_rows`]), recorded one row at a time as spans on the stack instead of
+//! marked in the sink): a pixel outside every object's fill is the background with no ray.
+//!
+//! `row_done` is called for every row of a pass's band of blocks once the band is drawn, so each
+//! row is reported once per pass (four times in all); a display flushes there.
+
+use super::shadow::ShadowCache;
+use super::trace::{pixel_value, with_shadow_culling, Mode, PgaNodes, RgbNodes};
+use super::{fill_volumes_rows, ShadowCulling, Statistics};
+use crate::number::Number;
+use crate::pixel::{PixelSink, Rgb888};
+use crate::scene::{Scene, MAX_DEPTH};
+
+/// How many passes a progressive render makes.
+pub const PASSES: usize = 4;
+/// Each pass's block size, coarse to fine.
+pub const PASS_SIZES: [u16; PASSES] = [8, 4, 2, 1];
+
+/// The statistics of each pass of a progressive render (`passes[k]` is pass `k`'s, of block
+/// size [`PASS_SIZES`]`[k]`): its pixels, the rays it traced and their tests.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct PassStatistics {
+    pub passes: [Statistics; PASSES],
+}
+
+impl PassStatistics {
+    /// The whole render's statistics: the sum over the passes.
+    pub fn total(&self) -> Statistics {
+        let mut total = Statistics::default();
+        for pass in &self.passes {
+            total.add(pass);
+        }
+        total
+    }
+}
+
+/// Renders the scene in PGA mode progressively (see the module's documentation), adding each
+/// pass's counts to `statistics.passes`. The final image equals [`super::render_pga`]'s.
+pub fn render_pga_progressive<N, S, const MAX_OBJECTS: usize>(scene: &Scene<N, MAX_OBJECTS>, sink: &mut S, statistics: &mut PassStatistics)
+where
+    N: Number,
+    S: PixelSink<u8>,
+{
+    with_shadow_culling(scene, |culling| {
+        let mut cache = ShadowCache::default();
+        for (pass, counts) in statistics.passes.iter_mut().enumerate() {
+            trace_pass(scene, sink, counts, pass, &mut cache, culling, scene.background, &PgaNodes { scene });
+        }
+    })
+}
+
+/// Renders the scene in RGB mode progressively; the final image equals [`super::render_rgb`]'s.
+pub fn render_rgb_progressive<N, S, const MAX_OBJECTS: usize>(scene: &Scene<N, MAX_OBJECTS>, sink: &mut S, statistics: &mut PassStatistics)
+where
+    N: Number,
+    S: PixelSink<Rgb888>,
+{
+    with_shadow_culling(scene, |culling| {
+        let mut cache = ShadowCache::default();
+        for (pass, counts) in statistics.passes.iter_mut().enumerate() {
+            trace_pass(scene, sink, counts, pass, &mut cache, culling, scene.background_rgb(), &RgbNodes { scene });
+        }
+    })
+}
+
+/// Pass `pass` (0..[`PASSES`]) of [`render_pga_progressive`] alone, for a caller that does
+/// something between passes: run 0, 1, 2, 3 in turn for the whole render. A pass beyond the last
+/// does nothing.
+pub fn render_pga_pass<N, S, const MAX_OBJECTS: usize>(scene: &Scene<N, MAX_OBJECTS>, sink: &mut S, pass: usize, statistics: &mut Statistics)
+where
+    N: Number,
+    S: PixelSink<u8>,
+{
+    with_shadow_culling(scene, |culling| {
+        trace_pass(scene, sink, statistics, pass, &mut ShadowCache::default(), culling, scene.background, &PgaNodes { scene });
+    })
+}
+
+/// Pass `pass` of [`render_rgb_progressive`] alone (see [`render_pga_pass`]).
+pub fn render_rgb_pass<N, S, const MAX_OBJECTS: usize>(scene: &Scene<N, MAX_OBJECTS>, sink: &mut S, pass: usize, statistics: &mut Statistics)
+where
+    N: Number,
+    S: PixelSink<Rgb888>,
+{
+    with_shadow_culling(scene, |culling| {
+        trace_pass(scene, sink, statistics, pass, &mut ShadowCache::default(), culling, scene.background_rgb(), &RgbNodes { scene });
+    })
+}
+
+/// Whether pass `pass` traces pixel (`column`, `row`): both multiples of its size, and (after
+/// the first pass) not both multiples of the previous pass's.
+pub fn traced_in_pass(pass: usize, column: u16, row: u16) -> bool {
+    let Some(&size) = PASS_SIZES.get(pass) else { return false };
+    let on_grid = |step: u16| column.is_multiple_of(step) && row.is_multiple_of(step);
+    on_grid(size) && (pass == 0 || !on_grid(size * 2))
+}
+
+#[allow(clippy::too_many_arguments)]
+fn trace_pass<N, P, S, M, const MAX_OBJECTS: usize>(
+    scene: &Scene<N, MAX_OBJECTS>,
+    sink: &mut S,
+    statistics: &mut Statistics,
+    pass: usize,
+    cache: &mut ShadowCache,
+    culling: &[ShadowCulling<'_, N>],
+    background: P,
+    mode: &M,
+) where
+    N: Number,
+    P: Copy,
+    S: PixelSink<P>,
+    M: Mode<N, Pixel = P>,
+{
+    let Some(&size) = PASS_SIZES.get(pass) else { return };
+    let camera = &scene.camera;
+    let (width, height) = (camera.width(), camera.height());
+    let pixelbuffer = scene.optimizations.pixelbuffer;
+    // In passes after the first, every other block of a row is the previous pass's on the rows
+    // that pass traced.
+    let step = usize::from(size);
+    for row in (0..height).step_by(step) {
+        let coverage = if pixelbuffer { Some(RowCoverage::<MAX_OBJECTS>::of(scene, row)) } else { None };
+        let block_height = size.min(height - row);
+        for column in (0..width).step_by(step) {
+            if !traced_in_pass(pass, column, row) {
+                continue;
+            }
+            statistics.pixels += 1;
+            let value = if coverage.as_ref().is_some_and(|coverage| !coverage.covers(column)) {
+                background
+            } else {
+                let pixel = camera.pixel(column, row);
+                pixel_value::<N, M, MAX_OBJECTS, { MAX_DEPTH as usize }>(scene, mode, pixel, statistics, cache, culling).unwrap_or(background)
+            };
+            if size == 1 {
+                sink.set_pixel(column, row, value);
+            } else {
+                let block_width = size.min(width - column);
+                for y in row..row + block_height {
+                    sink.fill_row(column, y, block_width, value);
+                }
+            }
+        }
+        for y in row..row + block_height {
+            sink.row_done(y);
+        }
+    }
+}
+
+/// The Pixelbuffer's fill of one row, as spans: which of its pixels the normal render with
+/// Pixelbuffer traces (the rest hold the flood colour and become the background). Each object
+/// marks at most one span a row; should more come, the whole row counts as covered (a traced
+/// pixel outside the fill is the background anyway).
+struct RowCoverage<const MAX_OBJECTS: usize> {
+    spans: [(u16, u16); MAX_OBJECTS],
+    count: usize,
+    overflowed: bool,
+}
+
+impl<const MAX_OBJECTS: usize> RowCoverage<MAX_OBJECTS> {
+    fn of<N: Number>(scene: &Scene<N, MAX_OBJECTS>, row: u16) -> Self {
+        let mut coverage = Self { spans: [(0, 0); MAX_OBJECTS], count: 0, overflowed: false };
+        fill_volumes_rows(scene, &mut coverage, true, false, row..row.saturating_add(1));
+        coverage
+    }
+
+    fn covers(&self, column: u16) -> bool {
+        self.overflowed || self.spans.iter().take(self.count).any(|&(first, width)| column >= first && column - first < width)
+    }
+}
+
+impl<const MAX_OBJECTS: usize> PixelSink<bool> for RowCoverage<MAX_OBJECTS> {
+    fn set_pixel(&mut self, x: u16, y: u16, filled: bool) {
+        self.mark_row(x, y, 1, filled);
+    }
+
+    fn fill_row(&mut self, x: u16, y: u16, width: u16, filled: bool) {
+        self.mark_row(x, y, width, filled);
+    }
+
+    /// The flood (`false`) comes first and covers nothing; each fill (`true`) is a span.
+    fn mark_row(&mut self, x: u16, _y: u16, width: u16, filled: bool) {
+        if !filled || width == 0 {
+            return;
+        }
+        match self.spans.get_mut(self.count) {
+            Some(span) => {
+                *span = (x, width);
+                self.count += 1;
+            }
+            None => self.overflowed = true,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests;
