@@ -332,6 +332,17 @@ fn check_primitives<const N: usize>(description: &SceneDescription<N>, scene_pat
             }
         }
     }
+    // The ray tree likewise (chapter 5): a scene whose objects reflect or transmit needs it.
+    if let Some(object) = description.objects.iter().find(|object| object.material.spawns_rays()) {
+        if env("CARGO_FEATURE_RAY_TREE").is_none() {
+            fail(&format!(
+                "{}:line {}: the object reflects or transmits but the firmware was built without the `ray-tree` feature; \
+                 enable it (`cargo xtask firmware` picks the features from the scene)",
+                scene_path.display(),
+                object.line
+            ));
+        }
+    }
 }
 
 
@@ -360,6 +371,10 @@ fn generate<const N: usize>(
     writeln!(out, "pub const HEIGHT: u16 = {};", v.height()).unwrap();
     writeln!(out, "pub const PIXEL_COUNT: usize = {};", v.pixel_count()).unwrap();
     writeln!(out, "pub const OBJECT_COUNT: usize = {};", d.objects.len()).unwrap();
+    // The ray tree's explicit stack holds this many nodes: the scene's `depth`, or one (the
+    // primary hit) when no object spawns rays.
+    let tree_depth = if d.objects.iter().any(|object| object.material.spawns_rays()) { d.depth } else { 1 };
+    writeln!(out, "pub const TREE_DEPTH: usize = {tree_depth};").unwrap();
     out
 }
 

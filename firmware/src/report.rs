@@ -31,6 +31,9 @@ impl Report {
         self.integer("ro_hits", statistics.ro_hits);
         self.integer("shadow_rays", statistics.shadow_rays);
         self.integer("shadow_tests", statistics.shadow_tests);
+        // The ray tree's (chapter 5); zero without one.
+        self.integer("secondary_rays", statistics.secondary_rays_total());
+        self.integer("secondary_tests", statistics.secondary_tests);
     }
 
     pub fn as_bytes(&self) -> &[u8] {

@@ -181,6 +181,33 @@ fn linked_code_is_clean(name: &str, board: Board, numbers: &std::collections::BT
     assert!(peak + 4096 <= size, "{name} on {}: peak stack {peak} of the {size} bytes there are", board.name());
 }
 
+/// The ray tree on the firmware (chapter 5): the polished snooker scene, built with the
+/// `ray-tree` feature the scene asks for, renders the host's image byte for byte with the same
+/// secondary rays, on both boards.
+fn ray_tree_matches_the_host(board: Board) {
+    let name = "snooker-polished.mts";
+    let (_, expected, statistics) = host_render_in::<f32>(name);
+    assert!(statistics.secondary_rays_total() > 0);
+    let run = run_firmware(name, board);
+    let framebuffer = std::fs::read(&run.framebuffer).unwrap();
+    let differing = framebuffer.iter().zip(&expected).filter(|(a, b)| a != b).count();
+    assert_eq!(differing, 0, "{name} on {}: {differing} pixels differ from the host render", board.name());
+    for (key, host) in [("secondary_rays", statistics.secondary_rays_total()), ("secondary_tests", statistics.secondary_tests), ("shadow_tests", statistics.shadow_tests)] {
+        assert_eq!(run.numbers[key], host, "{name} on {}: {key}", board.name());
+    }
+    linked_code_is_clean(name, board, &run.numbers);
+}
+
+#[test]
+fn the_ray_tree_on_lm3s6965evb_matches_the_host() {
+    ray_tree_matches_the_host(Board::Lm3s6965evb);
+}
+
+#[test]
+fn the_ray_tree_on_mps2_an386_matches_the_host() {
+    ray_tree_matches_the_host(Board::Mps2An386);
+}
+
 #[test]
 fn lattice_in_fixed_point_on_lm3s6965evb_matches_the_host() {
     firmware_matches_host_in::<microtrace::number::Fixed>("lattice.mts", Board::Lm3s6965evb);

@@ -286,8 +286,8 @@ fn check_options(options: &FirmwareOptions) -> Result<(), String> {
     Ok(())
 }
 
-/// The `cube`/`sphere`/`cylinder`/`cone` features the scene needs (the firmware models only
-/// those), parsing it with the same parser as the firmware's build script.
+/// The `cube`/`sphere`/`cylinder`/`cone` features the scene needs, and `ray-tree` when its
+/// objects reflect or transmit (the firmware models only those), parsing it with the same parser as the firmware's build script.
 fn primitive_features(scene: &Path) -> Result<Vec<&'static str>, String> {
     let text = std::fs::read(scene).map_err(|error| format!("scene {}: {error}", scene.display()))?;
     let description = microtrace::parser::parse::<FIRMWARE_SCENE_CAPACITY>(&text).map_err(|error| {
@@ -300,11 +300,16 @@ fn primitive_features(scene: &Path) -> Result<Vec<&'static str>, String> {
             _ => message,
         }
     })?;
-    Ok(Primitive::ALL
+    let mut features: Vec<&'static str> = Primitive::ALL
         .into_iter()
         .filter(|primitive| description.objects.iter().any(|object| object.primitive == *primitive))
         .map(Primitive::name)
-        .collect())
+        .collect();
+    // The ray tree, when an object reflects or transmits (chapter 5).
+    if description.objects.iter().any(|object| object.material.spawns_rays()) {
+        features.push("ray-tree");
+    }
+    Ok(features)
 }
 
 /// The firmware feature a number type needs (see `number_type` in firmware/build.rs).

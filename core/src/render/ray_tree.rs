@@ -75,7 +75,7 @@ pub(crate) fn trace_tree<N: Number, C: NodeColours<N>, const MAX_OBJECTS: usize,
     let mut spawned = false;
     loop {
         let generation = stack.len();
-        let Some(node) = stack.last_mut() else { return None };
+        let node = stack.last_mut()?;
         let (share, next) = match node.next {
             Branch::Reflected => (node.optics.reflect, Branch::Transmitted),
             Branch::Transmitted => (node.optics.transmit, Branch::Done),
@@ -152,4 +152,53 @@ fn surface<N: Number, C: NodeColours<N>, const MAX_OBJECTS: usize>(
     let at = SurfacePoint::new(prepared.object_from_world.transposed_vector(local_normal), ray, t, object);
     let lighting = direct_lighting(scene, object, at.point, at.normal, ray.direction, prepared.material.power, statistics, cache, context.culling);
     Some((at, context.colours.local(&prepared.material, lighting, context.pixel)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::parser::parse;
+
+    /// A refracted ray that enters a glass ball starts just inside it and must find the ball's
+    /// far side (no missed exit, no hit at the entry point), down to grazing entries, in every
+    /// number type; and leaving again it must not find the ball at its exit point.
+    fn refracted_rays_find_the_far_side<N: Number>() {
+        let text = b"sphere\n  scale 20 30 25\n  rotate y 30\n  translate 5 -7 -40\n  transmit 1\n  ior 1.5\n";
+        let description = parse::<1>(text).unwrap();
+        let scene = Scene::<N, 1>::prepare(&description).unwrap();
+        let object = &scene.objects[0];
+        let mut exits = 0;
+        for step in 0..400 {
+            // Rays from z = 100 toward the ball, offsets up to 0.999 of its half-width.
+            let offset = -0.999 + 1.998 * f64::from(step) / 399.0;
+            let direction = Vector3::<N>::from_f64([0.0, 0.0, -1.0]);
+            let ray = Ray { origin: Vector3::from_f64([5.0 + 20.0 * offset * 0.8, -7.0 + 3.0 * offset, 100.0]), direction };
+            let Some(hit) = object.primitive.intersect(&object.object_from_world.ray(&ray), crate::shapes::Interval::unbounded()) else { continue };
+            let at = SurfacePoint::new(object.object_from_world.transposed_vector(hit.normal), &ray, hit.t, 0);
+            assert!(at.entering, "{}", N::NAME);
+            let Some(inside) = refracted(at.direction, at.normal, N::ONE, N::from_f64(1.5)) else { panic!("{}: no refraction into glass", N::NAME) };
+            let inner = Ray { origin: shadow_origin(at.point, -at.normal), direction: inside };
+            let far = nearest_secondary_hit(&scene, &inner, &mut Statistics::default()).unwrap_or_else(|| panic!("{} offset {offset}: missed the far side", N::NAME));
+            let exit = SurfacePoint::new(object.object_from_world.transposed_vector(far.local_normal), &inner, far.t, 0);
+            assert!(!exit.entering, "{} offset {offset}: the far side was seen from outside", N::NAME);
+            // The chord is more than the offset's length: not the entry point found again.
+            assert!((exit.point - at.point).length() > N::from_f64(0.01), "{} offset {offset}: found the entry point", N::NAME);
+            if let Some(out) = refracted(exit.direction, exit.normal, N::from_f64(1.5), N::ONE) {
+                let outer = Ray { origin: shadow_origin(exit.point, -exit.normal), direction: out };
+                assert!(nearest_secondary_hit(&scene, &outer, &mut Statistics::default()).is_none(), "{} offset {offset}: met the ball again leaving it", N::NAME);
+                exits += 1;
+            }
+        }
+        assert!(exits > 300, "{}: {exits} rays left the ball", N::NAME);
+    }
+
+    #[test]
+    fn a_refracted_ray_finds_the_far_side_in_every_number_type() {
+        refracted_rays_find_the_far_side::<f64>();
+        refracted_rays_find_the_far_side::<f32>();
+        #[cfg(feature = "fixed-point")]
+        refracted_rays_find_the_far_side::<crate::number::Fixed>();
+        #[cfg(feature = "soft-float")]
+        refracted_rays_find_the_far_side::<crate::number::SoftFloat>();
+    }
 }

@@ -82,6 +82,18 @@ where
     render_pga_rows(scene, sink, statistics, 0..scene.camera.height())
 }
 
+/// [`render_pga`] with an explicit stack for a ray tree at most `DEPTH` generations deep (the
+/// firmware sizes it by its scene's `depth`; [`render_pga`] allows the format's deepest, 8).
+/// The render's stack then holds `DEPTH` tree nodes, and a scene's deeper `depth` is cut there.
+pub fn render_pga_with_tree_depth<N, S, const MAX_OBJECTS: usize, const DEPTH: usize>(scene: &Scene<N, MAX_OBJECTS>, sink: &mut S, statistics: &mut Statistics)
+where
+    N: Number,
+    S: PixelSink<u8> + PixelSource<u8>,
+{
+    let nodes = PgaNodes { scene };
+    render::<N, u8, S, _, MAX_OBJECTS, DEPTH>(scene, sink, statistics, 0..scene.camera.height(), scene.background, (PGA_FILL, PGA_FILL ^ 0xFF), &nodes)
+}
+
 /// [`render_pga`] of the image rows `rows` only (a band, for one of several threads): the
 /// sink receives only those rows. Every pixel's value equals the whole render's; the
 /// statistics are the band's (the hit and shadow caches start empty at its first row).

@@ -10,9 +10,10 @@ use core::fmt::{self, Write};
 use crate::camera::Camera;
 use crate::geometry::Vector3;
 use crate::number::Number;
+use crate::optimize::bounding_sphere::BoundingSphere;
 use crate::optimize::ObjectBounds;
 use crate::parser::{SceneError, SceneErrorKind};
-use crate::scene::{Object, Optimizations, PreparedLight, Scene};
+use crate::scene::{Object, Optics, Optimizations, PreparedLight, PreparedLightSource, Scene, MAX_LIGHTS};
 use crate::shading::{Palette, ShadingConstants};
 
 /// The parts of a scene prepared ahead, as the firmware keeps them in flash.
@@ -20,6 +21,14 @@ use crate::shading::{Palette, ShadingConstants};
 pub struct PreparedAhead<'a, N> {
     pub camera: Camera<N>,
     pub light: PreparedLight<N>,
+    pub light_intensity: N,
+    pub more_lights: &'a [PreparedLightSource<N>],
+    pub depth: u8,
+    /// The ray tree's per-object parts (empty when no object reflects or transmits).
+    #[cfg(feature = "ray-tree")]
+    pub optics: &'a [Optics<N>],
+    #[cfg(feature = "ray-tree")]
+    pub spheres: &'a [BoundingSphere<N>],
     pub constants: ShadingConstants<N>,
     pub background: u8,
     pub shadows: bool,
@@ -36,8 +45,26 @@ impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
     /// object's space and builds the acceleration structures from the bounds (per frame: the
     /// work that depends on the view and the light).
     pub fn prepare_ahead(&mut self, parts: &PreparedAhead<'_, N>) -> Result<(), SceneError> {
+        let too_many = |capacity| SceneError { line: 0, kind: SceneErrorKind::TooManyObjects { capacity } };
         self.camera = parts.camera;
         self.light = parts.light;
+        self.light_intensity = parts.light_intensity;
+        self.more_lights.clear();
+        for source in parts.more_lights {
+            self.more_lights.push(*source).map_err(|_| SceneError { line: 0, kind: SceneErrorKind::TooManyLights { capacity: MAX_LIGHTS } })?;
+        }
+        self.depth = parts.depth;
+        #[cfg(feature = "ray-tree")]
+        {
+            self.optics.clear();
+            self.spheres.clear();
+            for optics in parts.optics {
+                self.optics.push(*optics).map_err(|_| too_many(MAX_OBJECTS))?;
+            }
+            for sphere in parts.spheres {
+                self.spheres.push(*sphere).map_err(|_| too_many(MAX_OBJECTS))?;
+            }
+        }
         self.constants = parts.constants;
         self.background = parts.background;
         self.shadows = parts.shadows;
@@ -49,7 +76,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
         for object in parts.objects {
             let mut object = *object;
             object.eye = eye.map_or(Vector3::zero(), |eye| object.object_from_world.point(eye));
-            self.objects.push(object).map_err(|_| SceneError { line: 0, kind: SceneErrorKind::TooManyObjects { capacity: MAX_OBJECTS } })?;
+            self.objects.push(object).map_err(|_| too_many(MAX_OBJECTS))?;
         }
         self.acceleration.rebuild_from_bounds(&self.camera, self.optimizations, parts.bounds);
         Ok(())
@@ -107,6 +134,7 @@ pub fn write_prepared_ahead<N: Number, const MAX_OBJECTS: usize>(scene: &Scene<N
         writeln!(out, " }} }},")?;
     }
     writeln!(out, "];")?;
+    write_tree_ahead(scene, out)?;
     write!(out, "pub static PALETTE_AHEAD: microtrace::shading::Palette = microtrace::shading::Palette {{ entries: [")?;
     for entry in scene.palette.entries.iter() {
         write!(out, "microtrace::shading::Rgb4 {{ r: {}, g: {}, b: {} }}, ", entry.r, entry.g, entry.b)?;
@@ -137,7 +165,13 @@ pub fn write_prepared_ahead<N: Number, const MAX_OBJECTS: usize>(scene: &Scene<N
     };
     write!(out, "{kind}(")?;
     vector(out, position)?;
-    write!(out, "),\n    constants: microtrace::shading::ShadingConstants {{")?;
+    write!(out, "),\n    light_intensity: ")?;
+    scene.light_intensity.write_literal(out)?;
+    write!(out, ",\n    more_lights: &MORE_LIGHTS_AHEAD,\n    depth: {},", scene.depth)?;
+    // The tree's parts exist in a firmware built with the core's `ray-tree` feature (its own
+    // feature of that name); a scene that needs them fails the build without it.
+    write!(out, "\n    #[cfg(feature = \"ray-tree\")]\n    optics: &OPTICS_AHEAD,\n    #[cfg(feature = \"ray-tree\")]\n    spheres: &SPHERES_AHEAD,")?;
+    write!(out, "\n    constants: microtrace::shading::ShadingConstants {{")?;
     let c = &scene.constants;
     for (name, value) in [
         ("fifteen", c.fifteen),
@@ -159,6 +193,47 @@ pub fn write_prepared_ahead<N: Number, const MAX_OBJECTS: usize>(scene: &Scene<N
         scene.background, scene.shadows, scene.dither, o.pixelbuffer, o.extents, o.grid, o.sortlist
     )?;
     writeln!(out, "    palette: &PALETTE_AHEAD,\n    objects: &OBJECTS_AHEAD,\n    bounds: &BOUNDS_AHEAD,\n}};")
+}
+
+/// `MORE_LIGHTS_AHEAD`, and `OPTICS_AHEAD` and `SPHERES_AHEAD` (the ray tree's, empty without it).
+fn write_tree_ahead<N: Number, const MAX_OBJECTS: usize>(scene: &Scene<N, MAX_OBJECTS>, out: &mut dyn Write) -> fmt::Result {
+    writeln!(out, "pub static MORE_LIGHTS_AHEAD: [microtrace::scene::PreparedLightSource<Number>; {}] = [", scene.more_lights.len())?;
+    for source in &scene.more_lights {
+        let (kind, position) = match source.light {
+            PreparedLight::Point(position) => ("Point", position),
+            PreparedLight::Direction(direction) => ("Direction", direction),
+        };
+        write!(out, "    microtrace::scene::PreparedLightSource {{ light: microtrace::scene::PreparedLight::{kind}(")?;
+        vector(out, position)?;
+        write!(out, "), intensity: ")?;
+        source.intensity.write_literal(out)?;
+        writeln!(out, " }},")?;
+    }
+    writeln!(out, "];")?;
+    #[cfg(feature = "ray-tree")]
+    let (optics, spheres) = (&scene.optics[..], &scene.spheres[..]);
+    #[cfg(not(feature = "ray-tree"))]
+    let (optics, spheres): (&[Optics<N>], &[BoundingSphere<N>]) = (&[], &[]);
+    writeln!(out, "#[cfg(feature = \"ray-tree\")]\npub static OPTICS_AHEAD: [microtrace::scene::Optics<Number>; {}] = [", optics.len())?;
+    for o in optics {
+        write!(out, "    microtrace::scene::Optics {{ reflect: ")?;
+        o.reflect.write_literal(out)?;
+        write!(out, ", transmit: ")?;
+        o.transmit.write_literal(out)?;
+        write!(out, ", ior: ")?;
+        o.ior.write_literal(out)?;
+        writeln!(out, " }},")?;
+    }
+    writeln!(out, "];")?;
+    writeln!(out, "#[cfg(feature = \"ray-tree\")]\npub static SPHERES_AHEAD: [microtrace::optimize::bounding_sphere::BoundingSphere<Number>; {}] = [", spheres.len())?;
+    for b in spheres {
+        write!(out, "    microtrace::optimize::bounding_sphere::BoundingSphere {{ centre: ")?;
+        vector(out, b.centre)?;
+        write!(out, ", radius: ")?;
+        b.radius.write_literal(out)?;
+        writeln!(out, " }},")?;
+    }
+    writeln!(out, "];")
 }
 
 fn numbers<N: Number>(out: &mut dyn Write, values: &[N]) -> fmt::Result {
