@@ -375,6 +375,9 @@ fn generate<const N: usize>(
     // primary hit) when no object spawns rays.
     let tree_depth = if d.objects.iter().any(|object| object.material.spawns_rays()) { d.depth } else { 1 };
     writeln!(out, "pub const TREE_DEPTH: usize = {tree_depth};").unwrap();
+    // Antialiasing keeps one row of the pixels' corners: the image's width plus one.
+    let corner_row = if d.antialias.is_some() { usize::from(d.viewport.width()) + 1 } else { 1 };
+    writeln!(out, "pub const ANTIALIAS_ROW: usize = {corner_row};").unwrap();
     out
 }
 

@@ -26,7 +26,7 @@ use cortex_m_rt::{entry, exception};
 use embedded_graphics::prelude::Point;
 use microtrace::pixel::{FrameBuffer, GreyDrawTargetSink, PixelSink, PixelSource};
 #[cfg(not(feature = "progressive"))]
-use microtrace::render::{render_pga_with_tree_depth, Statistics};
+use microtrace::render::{render_pga_sized, Statistics};
 #[cfg(feature = "progressive")]
 use microtrace::render::{render_pga_progressive, PassStatistics};
 use microtrace::scene::Scene;
@@ -124,7 +124,7 @@ type Passes = PassStatistics;
 #[inline(never)]
 #[cfg(not(feature = "progressive"))]
 fn render<S: PixelSink<u8> + PixelSource<u8>>(scene: &PreparedScene, sink: &mut S, statistics: &mut Passes) {
-    render_pga_with_tree_depth::<scene::Number, S, { scene::OBJECT_COUNT }, { scene::TREE_DEPTH }>(scene, sink, statistics);
+    render_pga_sized::<scene::Number, S, { scene::OBJECT_COUNT }, { scene::TREE_DEPTH }, { scene::ANTIALIAS_ROW }>(scene, sink, statistics);
 }
 
 /// The progressive render (the `progressive` feature): coarse to fine, each pass straight into

@@ -39,14 +39,13 @@ fn scene_variant(kind: &SceneErrorKind) -> &'static str {
         SceneErrorKind::TooManyObjects { .. } => "TooManyObjects",
         SceneErrorKind::TooManyLights { .. } => "TooManyLights",
         SceneErrorKind::FeatureNotCompiled { .. } => "FeatureNotCompiled",
-        SceneErrorKind::NotYetSupported { .. } => "NotYetSupported",
         SceneErrorKind::SingularTransform => "SingularTransform",
         SceneErrorKind::PrimitiveNotCompiled { .. } => "PrimitiveNotCompiled",
         SceneErrorKind::OutOfRangeForNumberType { .. } => "OutOfRangeForNumberType",
     }
 }
 
-const SCENE_VARIANTS: [&str; 19] = [
+const SCENE_VARIANTS: [&str; 18] = [
     "InvalidUtf8",
     "UnknownKeyword",
     "WrongArgumentCount",
@@ -62,7 +61,6 @@ const SCENE_VARIANTS: [&str; 19] = [
     "TooManyObjects",
     "TooManyLights",
     "FeatureNotCompiled",
-    "NotYetSupported",
     "SingularTransform",
     "PrimitiveNotCompiled",
     "OutOfRangeForNumberType",

@@ -198,6 +198,20 @@ fn ray_tree_matches_the_host(board: Board) {
     linked_code_is_clean(name, board, &run.numbers);
 }
 
+/// Antialiasing on the firmware (chapter 5): the antialiased lattice renders the host's image
+/// byte for byte, with the same rays.
+#[test]
+fn antialiasing_on_mps2_an386_matches_the_host() {
+    let name = "lattice-antialiased.mts";
+    let (_, expected, statistics) = host_render_in::<f32>(name);
+    let run = run_firmware(name, Board::Mps2An386);
+    let framebuffer = std::fs::read(&run.framebuffer).unwrap();
+    assert_eq!(framebuffer, expected, "{name}: the framebuffer differs from the host render");
+    assert_eq!(run.numbers["rays_traced"], statistics.rays_traced);
+    assert!(statistics.rays_traced > 2 * statistics.pixels, "{} rays for {} pixels", statistics.rays_traced, statistics.pixels);
+    linked_code_is_clean(name, Board::Mps2An386, &run.numbers);
+}
+
 #[test]
 fn the_ray_tree_on_lm3s6965evb_matches_the_host() {
     ray_tree_matches_the_host(Board::Lm3s6965evb);

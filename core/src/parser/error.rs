@@ -106,8 +106,6 @@ pub enum SceneErrorKind {
     /// The scene uses a feature (reflection, refraction, more lights, antialiasing) that this
     /// build leaves out (scene preparation); `statement` names what asked for it.
     FeatureNotCompiled { feature: &'static str, statement: &'static str },
-    /// A statement of the format that this version parses but cannot render yet.
-    NotYetSupported { statement: &'static str },
     /// An object's transform cannot be inverted: a `scale` with a zero factor (the line is the
     /// `scale` statement's) or a transform that became singular or non-finite (the line is
     /// the object's first line).
@@ -173,7 +171,6 @@ impl fmt::Display for SceneErrorKind {
             Self::FeatureNotCompiled { feature, statement } => {
                 write!(f, "`{statement}` needs the `{feature}` feature, which this build leaves out")
             }
-            Self::NotYetSupported { statement } => write!(f, "`{statement}` is not supported yet by this version of MicroTrace"),
             Self::SingularTransform => f.write_str("singular transform: the object's transform cannot be inverted"),
             Self::PrimitiveNotCompiled { primitive } => write!(f, "{primitive} is not compiled into this build"),
             Self::OutOfRangeForNumberType { what, number, value, limit } => {

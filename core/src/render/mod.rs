@@ -1,6 +1,7 @@
 //! The per-pixel driver (RTRACE.C `raycast`, PGADPEND.C `pgatrace`, `rgbtrace`) and the
 //! statistics of Table 4.2.
 
+mod antialias;
 mod lights;
 mod primary;
 #[cfg(feature = "ray-tree")]
@@ -17,7 +18,7 @@ pub use primary::{nearest_hit, nearest_hit_cached, NearestHit};
 pub use progressive::{render_pga_pass, render_pga_progressive, render_rgb_pass, render_rgb_progressive, traced_in_pass, PassStatistics, PASSES, PASS_SIZES};
 pub use shadow::{in_shadow, in_shadow_cached, in_shadow_culled, shadow_origin, ShadowCache, ShadowCulling};
 pub use statistics::Statistics;
-pub use trace::{fill_volumes, fill_volumes_rows, render_pga, render_pga_rows, render_pga_with_tree_depth, render_rgb, render_rgb_rows, shade_pixel, ShadedPixel};
+pub use trace::{fill_volumes, fill_volumes_rows, render_pga, render_pga_rows, render_pga_sized, render_rgb, ANTIALIAS_ROW, render_rgb_rows, shade_pixel, ShadedPixel};
 
 #[cfg(test)]
 mod tests;

@@ -17,11 +17,14 @@
 //! ([`super::fill_volumes_rows`]), recorded one row at a time as spans on the stack instead of
 //! marked in the sink): a pixel outside every object's fill is the background with no ray.
 //!
+//! An antialiased scene (`render::antialias`) is rendered whole by the last pass.
+//!
 //! `row_done` is called for every row of a pass's band of blocks once the band is drawn, so each
 //! row is reported once per pass (four times in all); a display flushes there.
 
 use super::shadow::ShadowCache;
-use super::trace::{pixel_value, with_shadow_culling, Mode, PgaNodes, RgbNodes};
+use super::antialias::render_antialiased;
+use super::trace::{pixel_value, with_shadow_culling, Mode, PgaNodes, RgbNodes, ANTIALIAS_ROW};
 use super::{fill_volumes_rows, ShadowCulling, Statistics};
 use crate::number::Number;
 use crate::pixel::{PixelSink, Rgb888};
@@ -128,6 +131,13 @@ fn trace_pass<N, P, S, M, const MAX_OBJECTS: usize>(
     M: Mode<N, Pixel = P>,
 {
     let Some(&size) = PASS_SIZES.get(pass) else { return };
+    // An antialiased image has no coarse passes: its last pass renders it whole.
+    if let Some(antialias) = scene.antialias {
+        if size == 1 {
+            render_antialiased::<N, P, S, M, MAX_OBJECTS, { MAX_DEPTH as usize }, ANTIALIAS_ROW>(scene, antialias, sink, statistics, 0..antialias.image.height(), mode, culling);
+        }
+        return;
+    }
     let camera = &scene.camera;
     let (width, height) = (camera.width(), camera.height());
     let pixelbuffer = scene.optimizations.pixelbuffer;
@@ -167,20 +177,20 @@ fn trace_pass<N, P, S, M, const MAX_OBJECTS: usize>(
 /// Pixelbuffer traces (the rest hold the flood colour and become the background). Each object
 /// marks at most one span a row; should more come, the whole row counts as covered (a traced
 /// pixel outside the fill is the background anyway).
-struct RowCoverage<const MAX_OBJECTS: usize> {
+pub(crate) struct RowCoverage<const MAX_OBJECTS: usize> {
     spans: [(u16, u16); MAX_OBJECTS],
     count: usize,
     overflowed: bool,
 }
 
 impl<const MAX_OBJECTS: usize> RowCoverage<MAX_OBJECTS> {
-    fn of<N: Number>(scene: &Scene<N, MAX_OBJECTS>, row: u16) -> Self {
+    pub(crate) fn of<N: Number>(scene: &Scene<N, MAX_OBJECTS>, row: u16) -> Self {
         let mut coverage = Self { spans: [(0, 0); MAX_OBJECTS], count: 0, overflowed: false };
         fill_volumes_rows(scene, &mut coverage, true, false, row..row.saturating_add(1));
         coverage
     }
 
-    fn covers(&self, column: u16) -> bool {
+    pub(crate) fn covers(&self, column: u16) -> bool {
         self.overflowed || self.spans.iter().take(self.count).any(|&(first, width)| column >= first && column - first < width)
     }
 }

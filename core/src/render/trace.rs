@@ -2,6 +2,7 @@
 
 use core::ops::Range;
 
+use super::antialias::render_antialiased;
 use super::lights::direct_lighting;
 #[cfg(feature = "ray-tree")]
 use super::ray_tree::{trace_tree, TreeContext};
@@ -53,7 +54,7 @@ fn shade_pixel_cached<N: Number, const MAX_OBJECTS: usize>(
 }
 
 /// The primary ray's hit, its material and its local lighting (a shadow ray per light).
-fn primary_surface<N: Number, const MAX_OBJECTS: usize>(
+pub(crate) fn primary_surface<N: Number, const MAX_OBJECTS: usize>(
     scene: &Scene<N, MAX_OBJECTS>,
     pixel: PixelPosition,
     statistics: &mut Statistics,
@@ -79,19 +80,25 @@ where
     N: Number,
     S: PixelSink<u8> + PixelSource<u8>,
 {
-    render_pga_rows(scene, sink, statistics, 0..scene.camera.height())
+    render_pga_rows(scene, sink, statistics, 0..scene.viewport().height())
 }
 
-/// [`render_pga`] with an explicit stack for a ray tree at most `DEPTH` generations deep (the
-/// firmware sizes it by its scene's `depth`; [`render_pga`] allows the format's deepest, 8).
-/// The render's stack then holds `DEPTH` tree nodes, and a scene's deeper `depth` is cut there.
-pub fn render_pga_with_tree_depth<N, S, const MAX_OBJECTS: usize, const DEPTH: usize>(scene: &Scene<N, MAX_OBJECTS>, sink: &mut S, statistics: &mut Statistics)
+/// How many corners an antialiased render keeps of a row ([`render_pga`], [`render_rgb`]): an
+/// image up to 2,048 pixels wide shares every corner (6 KB of stack); a wider one traces the
+/// corners beyond again.
+pub const ANTIALIAS_ROW: usize = 2049;
+
+/// [`render_pga`] with its stack sized for the scene (the firmware's): an explicit stack for a
+/// ray tree at most `DEPTH` generations deep (a scene's deeper `depth` is cut there;
+/// [`render_pga`] allows the format's deepest, 8), and a row of `ROW` corners for antialiasing
+/// (the image's width plus one shares every corner; fewer traces some twice).
+pub fn render_pga_sized<N, S, const MAX_OBJECTS: usize, const DEPTH: usize, const ROW: usize>(scene: &Scene<N, MAX_OBJECTS>, sink: &mut S, statistics: &mut Statistics)
 where
     N: Number,
     S: PixelSink<u8> + PixelSource<u8>,
 {
     let nodes = PgaNodes { scene };
-    render::<N, u8, S, _, MAX_OBJECTS, DEPTH>(scene, sink, statistics, 0..scene.camera.height(), scene.background, (PGA_FILL, PGA_FILL ^ 0xFF), &nodes)
+    render::<N, u8, S, _, MAX_OBJECTS, DEPTH, ROW>(scene, sink, statistics, 0..scene.camera.height(), scene.background, (PGA_FILL, PGA_FILL ^ 0xFF), &nodes)
 }
 
 /// [`render_pga`] of the image rows `rows` only (a band, for one of several threads): the
@@ -103,7 +110,7 @@ where
     S: PixelSink<u8> + PixelSource<u8>,
 {
     let nodes = PgaNodes { scene };
-    render::<N, u8, S, _, MAX_OBJECTS, { MAX_DEPTH as usize }>(scene, sink, statistics, rows, scene.background, (PGA_FILL, PGA_FILL ^ 0xFF), &nodes)
+    render::<N, u8, S, _, MAX_OBJECTS, { MAX_DEPTH as usize }, ANTIALIAS_ROW>(scene, sink, statistics, rows, scene.background, (PGA_FILL, PGA_FILL ^ 0xFF), &nodes)
 }
 
 /// Renders the scene in RGB mode (see `shading::rgb` for how it differs from the thesis).
@@ -112,7 +119,7 @@ where
     N: Number,
     S: PixelSink<Rgb888> + PixelSource<Rgb888>,
 {
-    render_rgb_rows(scene, sink, statistics, 0..scene.camera.height())
+    render_rgb_rows(scene, sink, statistics, 0..scene.viewport().height())
 }
 
 /// [`render_rgb`] of the image rows `rows` only (see [`render_pga_rows`]).
@@ -122,7 +129,7 @@ where
     S: PixelSink<Rgb888> + PixelSource<Rgb888>,
 {
     let nodes = RgbNodes { scene };
-    render::<N, Rgb888, S, _, MAX_OBJECTS, { MAX_DEPTH as usize }>(scene, sink, statistics, rows, scene.background_rgb(), (RGB_FILL, RGB_FILL.map(|c| c ^ 0xFF)), &nodes)
+    render::<N, Rgb888, S, _, MAX_OBJECTS, { MAX_DEPTH as usize }, ANTIALIAS_ROW>(scene, sink, statistics, rows, scene.background_rgb(), (RGB_FILL, RGB_FILL.map(|c| c ^ 0xFF)), &nodes)
 }
 
 /// Pixelbuffer's fill colour in PGA mode (the thesis's default `fillcolor`); the flood is its
@@ -137,6 +144,8 @@ const READ_CHUNK: usize = 32;
 /// A mode's pixels: a surface's own (the thesis's shading) and the ray tree's node colours.
 pub(crate) trait Mode<N>: NodeColours<N> {
     fn surface(&self, material: &PreparedMaterial<N>, lighting: Lighting<N>, pixel: PixelPosition) -> Self::Pixel;
+    /// The pixel of an antialiased mean (8-bit RGB).
+    fn averaged(&self, colour: [u8; 3]) -> Self::Pixel;
 }
 
 /// PGA mode: a surface's palette index; a tree's node is its index's LUT colour, and a mixed
@@ -168,6 +177,9 @@ impl<N: Number, const MAX_OBJECTS: usize> Mode<N> for PgaNodes<'_, N, MAX_OBJECT
     fn surface(&self, material: &PreparedMaterial<N>, lighting: Lighting<N>, pixel: PixelPosition) -> u8 {
         pga_index(material, lighting, &self.scene.constants, self.scene.dither, pixel)
     }
+    fn averaged(&self, colour: [u8; 3]) -> u8 {
+        self.scene.palette.nearest(colour)
+    }
 }
 
 /// RGB mode: the channels' intensities, clamped and rounded (or dithered) once at the end.
@@ -191,6 +203,9 @@ impl<N: Number, const MAX_OBJECTS: usize> NodeColours<N> for RgbNodes<'_, N, MAX
 impl<N: Number, const MAX_OBJECTS: usize> Mode<N> for RgbNodes<'_, N, MAX_OBJECTS> {
     fn surface(&self, material: &PreparedMaterial<N>, lighting: Lighting<N>, pixel: PixelPosition) -> Rgb888 {
         rgb_pixel(material, lighting, &self.scene.constants, self.scene.dither, pixel)
+    }
+    fn averaged(&self, colour: [u8; 3]) -> Rgb888 {
+        colour
     }
 }
 
@@ -221,7 +236,7 @@ where
     Some(mode.surface(&material, lighting, pixel))
 }
 
-fn render<N, P, S, M, const MAX_OBJECTS: usize, const DEPTH: usize>(
+fn render<N, P, S, M, const MAX_OBJECTS: usize, const DEPTH: usize, const ROW: usize>(
     scene: &Scene<N, MAX_OBJECTS>,
     sink: &mut S,
     statistics: &mut Statistics,
@@ -235,6 +250,11 @@ fn render<N, P, S, M, const MAX_OBJECTS: usize, const DEPTH: usize>(
     S: PixelSink<P> + PixelSource<P>,
     M: Mode<N, Pixel = P>,
 {
+    if let Some(antialias) = scene.antialias {
+        return with_shadow_culling(scene, |culling| {
+            render_antialiased::<N, P, S, M, MAX_OBJECTS, DEPTH, ROW>(scene, antialias, sink, statistics, rows, mode, culling)
+        });
+    }
     let camera = &scene.camera;
     let pixelbuffer = scene.optimizations.pixelbuffer;
     let rows = rows.start..rows.end.min(camera.height());

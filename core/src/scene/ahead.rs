@@ -13,7 +13,7 @@ use crate::number::Number;
 use crate::optimize::bounding_sphere::BoundingSphere;
 use crate::optimize::ObjectBounds;
 use crate::parser::{SceneError, SceneErrorKind};
-use crate::scene::{Object, Optics, Optimizations, PreparedLight, PreparedLightSource, Scene, MAX_LIGHTS};
+use crate::scene::{Object, Optics, Optimizations, PreparedAntialias, PreparedLight, PreparedLightSource, Scene, MAX_LIGHTS};
 use crate::shading::{Palette, ShadingConstants};
 
 /// The parts of a scene prepared ahead, as the firmware keeps them in flash.
@@ -24,6 +24,7 @@ pub struct PreparedAhead<'a, N> {
     pub light_intensity: N,
     pub more_lights: &'a [PreparedLightSource<N>],
     pub depth: u8,
+    pub antialias: Option<PreparedAntialias>,
     /// The ray tree's per-object parts (empty when no object reflects or transmits).
     #[cfg(feature = "ray-tree")]
     pub optics: &'a [Optics<N>],
@@ -54,6 +55,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
             self.more_lights.push(*source).map_err(|_| SceneError { line: 0, kind: SceneErrorKind::TooManyLights { capacity: MAX_LIGHTS } })?;
         }
         self.depth = parts.depth;
+        self.antialias = parts.antialias;
         #[cfg(feature = "ray-tree")]
         {
             self.optics.clear();
@@ -167,7 +169,14 @@ pub fn write_prepared_ahead<N: Number, const MAX_OBJECTS: usize>(scene: &Scene<N
     vector(out, position)?;
     write!(out, "),\n    light_intensity: ")?;
     scene.light_intensity.write_literal(out)?;
-    write!(out, ",\n    more_lights: &MORE_LIGHTS_AHEAD,\n    depth: {},", scene.depth)?;
+    write!(out, ",\n    more_lights: &MORE_LIGHTS_AHEAD,\n    depth: {},\n    antialias: ", scene.depth)?;
+    match scene.antialias {
+        Some(a) => {
+            let v = a.image;
+            write!(out, "Some(microtrace::scene::PreparedAntialias {{ image: microtrace::scene::Viewport {{ x1: {}, x2: {}, y1: {}, y2: {} }}, levels: {}, threshold: {} }}),", v.x1, v.x2, v.y1, v.y2, a.levels, a.threshold)?
+        }
+        None => write!(out, "None,")?,
+    }
     // The tree's parts exist in a firmware built with the core's `ray-tree` feature (its own
     // feature of that name); a scene that needs them fails the build without it.
     write!(out, "\n    #[cfg(feature = \"ray-tree\")]\n    optics: &OPTICS_AHEAD,\n    #[cfg(feature = \"ray-tree\")]\n    spheres: &SPHERES_AHEAD,")?;

@@ -15,7 +15,7 @@ use crate::optimize::bounding_sphere::BoundingSphere;
 use crate::optimize::{Acceleration, Tuning};
 use crate::parser::{SceneError, SceneErrorKind};
 use crate::scene::range::{self, RayOrigins};
-use crate::scene::{Light, ObjectDescription, Optimizations, Primitive, SceneDescription, Viewport, MAX_LIGHTS};
+use crate::scene::{Antialias, Light, ObjectDescription, Optimizations, Primitive, SceneDescription, Viewport, Window, MAX_LIGHTS};
 use crate::shading::{Palette, Rgb4, ShadingConstants};
 
 /// An object's surface constants in the number type.
@@ -60,6 +60,45 @@ pub struct PreparedLightSource<N> {
     pub intensity: N,
 }
 
+/// Adaptive antialiasing as the render needs it (thesis fig 2.9): the image's viewport, the
+/// subdivision levels L and the threshold on an 8-bit channel's range over a square's corners.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PreparedAntialias {
+    pub image: Viewport,
+    pub levels: u8,
+    pub threshold: u8,
+}
+
+impl PreparedAntialias {
+    /// `None` when the sample grid would not fit in `u16` coordinates below 32767.
+    pub fn new(antialias: Antialias, image: Viewport) -> Option<Self> {
+        let step = 1u32 << antialias.levels;
+        let fits = |pixels: u16| u32::from(pixels) * step < 32767;
+        (fits(image.width()) && fits(image.height()) && antialias.levels <= 4).then_some(Self {
+            image,
+            levels: antialias.levels,
+            threshold: libm::round(antialias.threshold.clamp(0.0, 1.0) * 255.0) as u8,
+        })
+    }
+
+    /// Samples per pixel side, 2^L.
+    pub fn step(&self) -> u16 {
+        1 << self.levels
+    }
+
+    /// The sample grid's viewport and window: (W·2^L + 1) x (H·2^L + 1) samples, from half a
+    /// pixel before the first pixel's sample to half a pixel after the last (the pixels'
+    /// corners; a single column or row spans the window).
+    pub fn sample_grid(&self, image: Viewport, window: Window) -> (Viewport, Window) {
+        let step = self.step();
+        let viewport = Viewport { x1: 0, x2: image.width() * step, y1: 0, y2: image.height() * step };
+        // Half the spacing of the pixels' samples; a single column or row covers the window.
+        let half = |from: f64, to: f64, pixels: u16| if pixels > 1 { (to - from) / f64::from(pixels - 1) / 2.0 } else { 0.0 };
+        let (hx, hy) = (half(window.x1, window.x2, image.width()), half(window.y1, window.y2, image.height()));
+        (viewport, Window { x1: window.x1 - hx, x2: window.x2 + hx, y1: window.y1 - hy, y2: window.y2 + hy })
+    }
+}
+
 /// What an object does with the rays of the ray tree (chapter 5): the share it reflects, the
 /// share it transmits, and the refractive index of its inside.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -88,6 +127,8 @@ pub struct Scene<N, const MAX_OBJECTS: usize> {
     #[cfg(feature = "ray-tree")]
     pub spheres: Vec<BoundingSphere<N>, MAX_OBJECTS>,
     pub depth: u8,
+    /// Adaptive antialiasing (chapter 5, fig 2.9), when on: the camera is then the sample grid.
+    pub antialias: Option<PreparedAntialias>,
     pub constants: ShadingConstants<N>,
     pub background: u8,
     pub shadows: bool,
@@ -128,6 +169,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
         #[cfg(feature = "ray-tree")]
         spheres: Vec::new(),
         depth: 1,
+        antialias: None,
         constants: ShadingConstants {
             fifteen: N::ZERO,
             brightest: N::ZERO,
@@ -152,7 +194,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
         description: &SceneDescription<CAPACITY>,
         descriptions: &[ObjectDescription],
     ) -> Result<(), SceneError> {
-        let (camera, light) = Self::camera_and_light(description)?;
+        let (camera, light) = Self::camera_and_light(description, description.antialias)?;
         self.camera = camera;
         self.light = light;
         self.light_intensity = N::from_f64(description.light_intensity);
@@ -163,9 +205,13 @@ impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
             let _ = self.more_lights.push(PreparedLightSource { light, intensity: N::from_f64(source.intensity) });
         }
         self.depth = description.depth;
-        if description.antialias.is_some() {
-            return Err(SceneError { line: description.lines.antialias, kind: SceneErrorKind::NotYetSupported { statement: "antialias" } });
-        }
+        self.antialias = match description.antialias {
+            Some(antialias) => Some(PreparedAntialias::new(antialias, description.viewport).ok_or(SceneError {
+                line: description.lines.antialias,
+                kind: SceneErrorKind::InvalidRectangle { what: "antialias", requirement: "the viewport's width and height times 2^L must stay below 32767 samples" },
+            })?),
+            None => None,
+        };
         self.constants = ShadingConstants::new(description.ambient);
         self.background = description.background;
         self.shadows = description.shadows;
@@ -175,10 +221,19 @@ impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
         self.prepare_objects(description, descriptions)
     }
 
+    /// The camera, and the first light. With antialiasing the camera samples the pixels'
+    /// corners and their subdivisions (`render::antialias`): a grid 2^L times finer, reaching half
+    /// a pixel beyond the window's edge samples, whose every sample is a "pixel" to the
+    /// optimizations.
     fn camera_and_light<const CAPACITY: usize>(
         description: &SceneDescription<CAPACITY>,
+        antialias: Option<Antialias>,
     ) -> Result<(Camera<N>, PreparedLight<N>), SceneError> {
-        let camera = Camera::new(description.viewport, description.window, description.view_plane, description.projection)
+        let (viewport, window) = match antialias.and_then(|antialias| PreparedAntialias::new(antialias, description.viewport)) {
+            Some(prepared) => prepared.sample_grid(description.viewport, description.window),
+            None => (description.viewport, description.window),
+        };
+        let camera = Camera::new(viewport, window, description.view_plane, description.projection)
             .ok_or(SceneError { line: description.lines.projection, kind: SceneErrorKind::ZeroDirection })?;
         Ok((camera, Self::prepared_light(description.light, description.lines.light)?))
     }
@@ -293,8 +348,12 @@ impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
         Ok(())
     }
 
+    /// The image's viewport (with antialiasing the camera's is the finer sample grid's).
     pub fn viewport(&self) -> Viewport {
-        self.camera.viewport
+        match self.antialias {
+            Some(antialias) => antialias.image,
+            None => self.camera.viewport,
+        }
     }
 
     /// The background in RGB mode: the look-up table's colour for the background index (the
