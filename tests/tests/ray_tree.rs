@@ -4,9 +4,10 @@
 use microtrace::number::{F32Micro, Fixed, Fixed16, Number, SoftFloat};
 use microtrace::pixel::{FrameBuffer, Rgb888};
 use microtrace::render::{render_pga, render_rgb, Statistics};
+use microtrace::optimize::space_grid::SpaceGrid;
 use microtrace::scene::{Optimizations, Scene, SceneDescription};
 
-const CAPACITY: usize = 32;
+const CAPACITY: usize = 80;
 
 fn description(text: &str) -> SceneDescription<CAPACITY> {
     microtrace::parser::parse::<CAPACITY>(text.as_bytes()).unwrap_or_else(|error| panic!("{error}"))
@@ -22,13 +23,40 @@ fn sized(mut scene: SceneDescription<CAPACITY>, width: u16, height: u16) -> Scen
     scene
 }
 
-/// Prepared, optionally without the secondary rays' bounding spheres (brute force).
-fn prepare<N: Number>(scene: &SceneDescription<CAPACITY>, brute_force: bool) -> Box<Scene<N, CAPACITY>> {
+/// How secondary rays find their objects.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Secondary {
+    /// The uniform 3-D grid and the bounding spheres (the default).
+    Grid,
+    /// The bounding spheres of every object.
+    Spheres,
+    /// Every object's primitive.
+    BruteForce,
+}
+
+/// Prepared, with the secondary rays' acceleration as asked.
+fn prepare_with<N: Number>(scene: &SceneDescription<CAPACITY>, secondary: Secondary) -> Box<Scene<N, CAPACITY>> {
     let mut prepared = Box::new(Scene::<N, CAPACITY>::prepare(scene).unwrap_or_else(|error| panic!("{}: {error}", N::NAME)));
-    if brute_force {
+    if secondary != Secondary::Grid {
+        prepared.space_grid = SpaceGrid::NONE;
+    }
+    if secondary == Secondary::BruteForce {
         prepared.spheres.clear();
     }
     prepared
+}
+
+fn prepare<N: Number>(scene: &SceneDescription<CAPACITY>, brute_force: bool) -> Box<Scene<N, CAPACITY>> {
+    prepare_with(scene, if brute_force { Secondary::BruteForce } else { Secondary::Grid })
+}
+
+fn pga_with<N: Number>(scene: &SceneDescription<CAPACITY>, secondary: Secondary) -> (Vec<u8>, Statistics) {
+    let prepared = prepare_with::<N>(scene, secondary);
+    let (width, height) = (scene.viewport.width(), scene.viewport.height());
+    let mut pixels = vec![0u8; usize::from(width) * usize::from(height)];
+    let mut statistics = Statistics::default();
+    render_pga(&*prepared, &mut FrameBuffer::new(&mut pixels, width, height).unwrap(), &mut statistics);
+    (pixels, statistics)
 }
 
 fn pga<N: Number>(scene: &SceneDescription<CAPACITY>, brute_force: bool) -> (Vec<u8>, Statistics) {
@@ -53,13 +81,13 @@ fn same_share<P: PartialEq>(a: &[P], b: &[P]) -> f64 {
     a.iter().zip(b).filter(|(x, y)| x == y).count() as f64 / a.len() as f64
 }
 
-const HARD_CASES: [&str; 4] = ["ray-tree/facing-mirrors.mts", "ray-tree/glass-in-mirror.mts", "ray-tree/inside-glass.mts", "snooker-polished.mts"];
+const HARD_CASES: [&str; 5] = ["ray-tree/facing-mirrors.mts", "ray-tree/glass-in-mirror.mts", "ray-tree/inside-glass.mts", "snooker-polished.mts", "ray-tree/mirror-balls.mts"];
 
 /// Every hard case renders in every number type (no panic), and the accurate types agree with
 /// `f64` on nearly every pixel. Measured at 64x48: f32, soft32 and fixed 100 % on all four (the
-/// test asks 99.5 %); `fixed16` 59–90 % and `f32-micromath` 62–99 %, whose direction errors
+/// test asks 99.5 %); `fixed16` 52–90 % and `f32-micromath` 62–99 %, whose direction errors
 /// (docs/hard-cases.md, deviation 30) grow down the tree: for those two the test asserts the
-/// lowest measured share less a margin (55 %, 60 %), so that they render and do not get worse.
+/// lowest measured share less a margin (50 %, 60 %), so that they render and do not get worse.
 #[test]
 fn the_hard_cases_render_in_every_number_type() {
     for name in HARD_CASES {
@@ -70,7 +98,7 @@ fn the_hard_cases_render_in_every_number_type() {
             ("f32", same_share(&reference, &pga::<f32>(&scene, false).0), 0.995),
             ("soft32", same_share(&reference, &pga::<SoftFloat>(&scene, false).0), 0.995),
             ("fixed", same_share(&reference, &pga::<Fixed>(&scene, false).0), 0.995),
-            ("fixed16", same_share(&reference, &pga::<Fixed16>(&scene, false).0), 0.55),
+            ("fixed16", same_share(&reference, &pga::<Fixed16>(&scene, false).0), 0.50),
             ("f32-micromath", same_share(&reference, &pga::<F32Micro>(&scene, false).0), 0.60),
         ];
         for (number, share, target) in shares {
@@ -170,23 +198,37 @@ fn a_transparent_blocker_passes_its_share_of_the_light() {
     assert!(dark < half && half < lit, "opaque {dark}, half {half}, clear {lit}");
 }
 
-/// The secondary rays' bounding spheres skip tests and change nothing: the same image and the
-/// same rays as brute force, with fewer ray–object tests per secondary ray.
+/// The secondary rays' acceleration skips tests and changes nothing: the uniform 3-D grid and
+/// the bounding spheres alone give the same image and the same rays as brute force, with fewer
+/// ray–object tests per secondary ray (the grid fewest on the scene of 65 mirrors).
 #[test]
-fn bounding_spheres_change_no_pixel_and_save_tests() {
+fn the_secondary_acceleration_changes_no_pixel_and_saves_tests() {
     for name in HARD_CASES {
         let scene = sized(scene_file(name), 64, 48);
-        for number in ["f64", "f32", "fixed"] {
-            let (bounded, brute) = match number {
-                "f64" => (pga::<f64>(&scene, false), pga::<f64>(&scene, true)),
-                "f32" => (pga::<f32>(&scene, false), pga::<f32>(&scene, true)),
-                _ => (pga::<Fixed>(&scene, false), pga::<Fixed>(&scene, true)),
+        for number in ["f64", "f32", "fixed", "soft32"] {
+            let run = |secondary| match number {
+                "f64" => pga_with::<f64>(&scene, secondary),
+                "f32" => pga_with::<f32>(&scene, secondary),
+                "soft32" => pga_with::<SoftFloat>(&scene, secondary),
+                _ => pga_with::<Fixed>(&scene, secondary),
             };
-            assert_eq!(bounded.0, brute.0, "{name} {number}");
-            assert_eq!(bounded.1.secondary_rays, brute.1.secondary_rays, "{name} {number}");
+            let (grid, spheres, brute) = (run(Secondary::Grid), run(Secondary::Spheres), run(Secondary::BruteForce));
+            assert_eq!(grid.0, brute.0, "{name} {number}: the grid's image");
+            assert_eq!(spheres.0, brute.0, "{name} {number}: the spheres' image");
+            assert_eq!(grid.1.secondary_rays, brute.1.secondary_rays, "{name} {number}");
+            assert_eq!(spheres.1.secondary_rays, brute.1.secondary_rays, "{name} {number}");
             let per_ray = |s: &Statistics| s.secondary_tests as f64 / s.secondary_rays_total() as f64;
-            println!("{name} {number}: {:.2} tests per secondary ray with bounding spheres, {:.2} brute force", per_ray(&bounded.1), per_ray(&brute.1));
-            assert!(bounded.1.secondary_tests < brute.1.secondary_tests, "{name} {number}");
+            println!(
+                "{name} {number}: tests per secondary ray: grid {:.2}, bounding spheres {:.2}, brute force {:.2}",
+                per_ray(&grid.1),
+                per_ray(&spheres.1),
+                per_ray(&brute.1)
+            );
+            assert!(spheres.1.secondary_tests < brute.1.secondary_tests, "{name} {number}");
+            assert!(grid.1.secondary_tests <= spheres.1.secondary_tests, "{name} {number}");
+            if name.contains("mirror-balls") {
+                assert!(per_ray(&grid.1) < 0.5 * per_ray(&brute.1), "{name} {number}");
+            }
         }
     }
 }

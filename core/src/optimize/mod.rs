@@ -14,6 +14,7 @@ pub mod grid;
 pub mod pixelbuffer;
 pub mod projection;
 pub mod shadow;
+pub mod space_grid;
 pub mod sortlist;
 
 use crate::camera::{Camera, PixelPosition};

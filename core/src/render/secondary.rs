@@ -16,6 +16,9 @@ pub(crate) fn nearest_secondary_hit<N: Number, const MAX_OBJECTS: usize>(
     ray: &Ray<N>,
     statistics: &mut Statistics,
 ) -> Option<NearestHit<N>> {
+    if scene.space_grid.is_built() {
+        return nearest_in_grid(scene, ray, statistics);
+    }
     let mut nearest: Option<NearestHit<N>> = None;
     for (index, object) in scene.objects.iter().enumerate() {
         let reach = nearest.map_or(N::MAX, |best| best.t);
@@ -29,5 +32,28 @@ pub(crate) fn nearest_secondary_hit<N: Number, const MAX_OBJECTS: usize>(
             nearest = Some(NearestHit { object: index, t: hit.t, local_normal: hit.normal });
         }
     }
+    nearest
+}
+
+/// [`nearest_secondary_hit`] through the uniform 3-D grid: only the objects of the cells the ray
+/// passes, in the cells' order; ties still go to the earlier object.
+fn nearest_in_grid<N: Number, const MAX_OBJECTS: usize>(scene: &Scene<N, MAX_OBJECTS>, ray: &Ray<N>, statistics: &mut Statistics) -> Option<NearestHit<N>> {
+    let mut nearest: Option<NearestHit<N>> = None;
+    scene.space_grid.walk(ray, scene.objects.len(), |index| {
+        let reach = nearest.map_or(N::MAX, |best| best.t);
+        if let Some(object) = scene.objects.get(index) {
+            if scene.bounding_sphere(index).may_meet(ray.origin, ray.direction, reach) {
+                let interval = match nearest {
+                    None => Interval::unbounded(),
+                    Some(best) => Interval { max: best.t, include_max: index < best.object },
+                };
+                statistics.secondary_tests += 1;
+                if let Some(hit) = object.primitive.intersect(&object.object_from_world.ray(ray), interval) {
+                    nearest = Some(NearestHit { object: index, t: hit.t, local_normal: hit.normal });
+                }
+            }
+        }
+        nearest.map(|best| best.t)
+    });
     nearest
 }

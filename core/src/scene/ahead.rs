@@ -66,6 +66,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
             for sphere in parts.spheres {
                 self.spheres.push(*sphere).map_err(|_| too_many(MAX_OBJECTS))?;
             }
+            self.space_grid.build(&self.spheres);
         }
         self.constants = parts.constants;
         self.background = parts.background;

@@ -12,6 +12,8 @@ use crate::geometry::{AffineTransform, Vector3};
 use crate::number::Number;
 #[cfg(feature = "ray-tree")]
 use crate::optimize::bounding_sphere::BoundingSphere;
+#[cfg(feature = "ray-tree")]
+use crate::optimize::space_grid::SpaceGrid;
 use crate::optimize::{Acceleration, Tuning};
 use crate::parser::{SceneError, SceneErrorKind};
 use crate::scene::range::{self, RayOrigins};
@@ -126,6 +128,9 @@ pub struct Scene<N, const MAX_OBJECTS: usize> {
     /// The objects' world-space spheres for secondary rays, filled with `optics`.
     #[cfg(feature = "ray-tree")]
     pub spheres: Vec<BoundingSphere<N>, MAX_OBJECTS>,
+    /// The uniform 3-D grid over the spheres for secondary rays (none without spheres).
+    #[cfg(feature = "ray-tree")]
+    pub space_grid: SpaceGrid<N, MAX_OBJECTS>,
     pub depth: u8,
     /// Adaptive antialiasing (chapter 5, fig 2.9), when on: the camera is then the sample grid.
     pub antialias: Option<PreparedAntialias>,
@@ -168,6 +173,8 @@ impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
         optics: Vec::new(),
         #[cfg(feature = "ray-tree")]
         spheres: Vec::new(),
+        #[cfg(feature = "ray-tree")]
+        space_grid: SpaceGrid::NONE,
         depth: 1,
         antialias: None,
         constants: ShadingConstants {
@@ -345,6 +352,8 @@ impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
             }
         }
         self.acceleration.rebuild(&self.camera, description.optimizations, descriptions, Tuning::IMPROVED);
+        #[cfg(feature = "ray-tree")]
+        self.space_grid.build(&self.spheres);
         Ok(())
     }
 
