@@ -1,4 +1,4 @@
-//! The `.mts` scene format (`shared/scene-format.md`): one statement per line mirroring the
+//! The `.mts` scene format (`docs/scene-format.md`): one statement per line mirroring the
 //! thesis's user-interface calls, parsed into a [`SceneDescription`].
 //!
 //! [`parse`] takes raw bytes and never panics, allocates nothing, and runs in one pass over the

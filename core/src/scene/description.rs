@@ -1,5 +1,5 @@
 //! The scene as written: every global setting of the thesis's user interface (§2.1 of the
-//! digest) and the list of objects, with the defaults of `../shared/scene-format.md`.
+//! digest) and the list of objects, with the defaults of `docs/scene-format.md`.
 //! Capacities are in the type: `MAX_OBJECTS` is how many objects the build can hold.
 
 use heapless::Vec;
