@@ -1,7 +1,6 @@
 //! `docs/scene-format.md`, the repository's reference of the `.mts` format, checked against the
 //! parser so that it cannot drift from the code:
-//! - every fenced block marked ```` ```mts ```` parses (and, unless it asks for antialiasing,
-//!   which preparation rejects for now, also prepares in `f64`);
+//! - every fenced block marked ```` ```mts ```` parses and prepares in `f64`;
 //! - the statement tables (tables whose first header cell is `statement`) name only keywords
 //!   the parser knows, and every one of the parser's 31 keywords (`Keyword::ALL` in
 //!   core/src/parser/mod.rs) as a statement; a statement listed under "Object statements"
@@ -157,12 +156,7 @@ fn every_mts_block_parses() {
         let description = parse::<CAPACITY>(text.as_bytes())
             .unwrap_or_else(|error| panic!("the ```mts block at docs/scene-format.md line {line} does not parse: {error}"));
         let prepared = Scene::<f64, CAPACITY>::prepare(&description).map(|_| ());
-        if description.antialias.is_some() {
-            assert!(
-                matches!(&prepared, Err(SceneError { kind: SceneErrorKind::NotYetSupported { statement: "antialias" }, .. })),
-                "block at line {line}: antialias should be rejected at preparation, got {prepared:?}"
-            );
-        } else if let Err(error) = prepared {
+        if let Err(error) = prepared {
             panic!("the ```mts block at docs/scene-format.md line {line} parses but does not prepare: {error}");
         }
     }

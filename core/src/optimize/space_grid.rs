@@ -5,7 +5,7 @@
 //! and tests only their objects, each once, stopping at the first cell that ends beyond the
 //! nearest hit found.
 //!
-//! Fixed capacity: at most [`CELLS`] cells and four cell entries per object on average; an
+//! Fixed capacity: at most [`CELLS`] cells and [`ENTRIES_PER_OBJECT`] cell entries per object on average; an
 //! object that would take more than [`LARGE_OBJECT_CELLS`] cells (a floor, a wall) is kept out of
 //! the cells and tested by every ray. When the entries do not fit, or in a type whose
 //! directions are too coarse for the margins (`Number::SHADOW_CULLING_HOLDS` false), there is
@@ -23,6 +23,8 @@ use crate::optimize::shadow::BlockerSet;
 pub const MAX_RESOLUTION: usize = 8;
 /// Cells at most.
 pub const CELLS: usize = MAX_RESOLUTION * MAX_RESOLUTION * MAX_RESOLUTION;
+/// Cell entries per object on average at most (else no grid).
+pub const ENTRIES_PER_OBJECT: usize = 8;
 /// An object reaching more cells than this is tested by every ray instead.
 pub const LARGE_OBJECT_CELLS: usize = 64;
 
@@ -34,7 +36,7 @@ pub struct SpaceGrid<N, const MAX_OBJECTS: usize> {
     cell: Vector3<N>,
     /// Where each cell's entries start in `entries` (cell `i`'s run is `starts[i]..starts[i+1]`).
     starts: [u16; CELLS + 1],
-    entries: [[u16; 4]; MAX_OBJECTS],
+    entries: [[u16; ENTRIES_PER_OBJECT]; MAX_OBJECTS],
     /// Objects tested by every ray (too large for the cells).
     large: BlockerSet,
     large_beyond: bool,
@@ -46,7 +48,7 @@ impl<N: Number, const MAX_OBJECTS: usize> SpaceGrid<N, MAX_OBJECTS> {
         low: Vector3 { x: N::ZERO, y: N::ZERO, z: N::ZERO },
         cell: Vector3 { x: N::ZERO, y: N::ZERO, z: N::ZERO },
         starts: [0; CELLS + 1],
-        entries: [[0; 4]; MAX_OBJECTS],
+        entries: [[0; ENTRIES_PER_OBJECT]; MAX_OBJECTS],
         large: BlockerSet::EMPTY,
         large_beyond: false,
     };
@@ -104,7 +106,8 @@ impl<N: Number, const MAX_OBJECTS: usize> SpaceGrid<N, MAX_OBJECTS> {
                 None => self.mark_large(index),
             }
         }
-        if total > 4 * MAX_OBJECTS || total > usize::from(u16::MAX) {
+        // By the scene's own count, not the build's capacity: every build of a scene decides alike.
+        if total > ENTRIES_PER_OBJECT * spheres.len() || total > usize::from(u16::MAX) {
             self.resolution = 0;
             return;
         }
@@ -146,7 +149,7 @@ impl<N: Number, const MAX_OBJECTS: usize> SpaceGrid<N, MAX_OBJECTS> {
         let mut a = [0usize; 3];
         let mut b = [0usize; 3];
         for axis in 0..3 {
-            let index = |value: N| value.checked_div(cell[axis]).map_or(0, |q| q.floor_to_i32().clamp(0, self.resolution as i32 - 1) as usize);
+            let index = |value: N| value.checked_div(cell[axis]).map_or(0, |q| q.floor_to_i32().min(self.resolution as i32 - 1).max(0) as usize);
             a[axis] = index(c[axis] - r - margin(cell[axis]) - low[axis]);
             b[axis] = index(c[axis] + r + margin(cell[axis]) - low[axis]);
         }
@@ -225,7 +228,8 @@ impl<N: Number, const MAX_OBJECTS: usize> SpaceGrid<N, MAX_OBJECTS> {
         let mut delta = [N::MAX; 3];
         for axis in 0..3 {
             let at = origin[axis] + direction[axis] * enter - low[axis];
-            let index = at.checked_div(cell[axis]).map_or(0, |q| q.floor_to_i32()).clamp(0, resolution - 1);
+            // `min` then `max`, not `clamp`: clamp asserts its bounds' order, a panic path.
+            let index = at.checked_div(cell[axis]).map_or(0, |q| q.floor_to_i32()).min(resolution - 1).max(0);
             position[axis] = index;
             if direction[axis] > N::ZERO {
                 step[axis] = 1;
