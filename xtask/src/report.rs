@@ -15,6 +15,10 @@ pub const END_MARKER: &str = "<!-- firmware-report:end -->";
 const SECTION_HEADING: &str = "## The firmware: cost and footprint";
 
 const SCENES: [&str; 2] = ["scenes/snooker.mts", "scenes/lattice.mts"];
+/// The chapter-5 scenes (the ray tree, antialiasing), run with their own `optimize` in these
+/// number types only: what the tree and the corners cost on each board.
+const CHAPTER_FIVE_SCENES: [&str; 2] = ["scenes/snooker-polished.mts", "scenes/lattice-antialiased.mts"];
+const CHAPTER_FIVE_NUMBERS: [&str; 2] = ["f32", "soft32"];
 /// The all-primitives builds are compared in this number type only: code size, not arithmetic.
 const ALL_PRIMITIVES_NUMBER: &str = "f32";
 
@@ -49,6 +53,9 @@ pub struct ReportRun {
     pub f64_symbols: u64,
     pub panic_symbols: u64,
     pub fmt_symbols: u64,
+    /// Primary rays (with antialiasing, every corner and sub-corner ray) and the ray tree's.
+    pub rays_traced: u64,
+    pub secondary_rays: u64,
 }
 
 /// A part of the report to run instead of all of it (`cargo xtask firmware-report --scene snooker
@@ -84,8 +91,8 @@ impl ReportFilter {
     /// has, or keeps no run at all.
     fn check(&self) -> Result<(), String> {
         if let Some(scene) = &self.scene {
-            if !SCENES.iter().any(|file| file.trim_start_matches("scenes/").trim_end_matches(".mts") == scene) {
-                return Err(format!("--scene {scene}: the report runs snooker and lattice"));
+            if !SCENES.iter().chain(CHAPTER_FIVE_SCENES.iter()).any(|file| file.trim_start_matches("scenes/").trim_end_matches(".mts") == scene) {
+                return Err(format!("--scene {scene}: the report runs snooker, lattice, snooker-polished and lattice-antialiased"));
             }
         }
         if let Some(number) = &self.number {
@@ -126,6 +133,15 @@ fn plan(filter: &ReportFilter) -> Vec<(PathBuf, Board, &'static str, Primitives,
         for board in Board::ALL {
             if filter.keeps(scene, board, ALL_PRIMITIVES_NUMBER, Primitives::All, "scene") {
                 plan.push((root.join(scene), board, ALL_PRIMITIVES_NUMBER, Primitives::All, "scene"));
+            }
+        }
+    }
+    for scene in CHAPTER_FIVE_SCENES {
+        for board in Board::ALL {
+            for number in CHAPTER_FIVE_NUMBERS {
+                if filter.keeps(scene, board, number, Primitives::Scene, "scene") {
+                    plan.push((root.join(scene), board, number, Primitives::Scene, "scene"));
+                }
             }
         }
     }
@@ -173,6 +189,8 @@ pub fn run(filter: &ReportFilter) -> Result<Vec<ReportRun>, String> {
             f64_symbols: get("f64_symbols")?,
             panic_symbols: get("panic_symbols")?,
             fmt_symbols: get("fmt_symbols")?,
+            rays_traced: get("rays_traced")?,
+            secondary_rays: get("secondary_rays")?,
         };
         println!(
             "    {} instructions per pixel (frame {}: prepare {}, render {}), flash {} B, static RAM {} B, peak stack {} B ({:.0} s so far)",
@@ -219,7 +237,8 @@ pub fn json(runs: &[ReportRun]) -> String {
                 "{{\"scene\":\"{}\",\"board\":\"{}\",\"number\":\"{}\",\"primitives\":\"{}\",\"optimizations\":\"{}\",\"width\":{},\"height\":{},\
                  \"instructions\":{},\"frame_instructions\":{},\"prepare_instructions\":{},\"render_instructions\":{},\
                  \"pixels\":{},\"instructions_per_pixel\":{},\"flash_bytes\":{},\
-                 \"static_ram_bytes\":{},\"stack_peak_bytes\":{},\"f64_symbols\":{},\"panic_symbols\":{},\"fmt_symbols\":{}}}",
+                 \"static_ram_bytes\":{},\"stack_peak_bytes\":{},\"f64_symbols\":{},\"panic_symbols\":{},\"fmt_symbols\":{},\
+                 \"rays_traced\":{},\"secondary_rays\":{}}}",
                 run.scene,
                 run.board.name(),
                 run.number,
@@ -238,7 +257,9 @@ pub fn json(runs: &[ReportRun]) -> String {
                 run.stack_peak_bytes,
                 run.f64_symbols,
                 run.panic_symbols,
-                run.fmt_symbols
+                run.fmt_symbols,
+                run.rays_traced,
+                run.secondary_rays
             )
         })
         .collect();
@@ -274,7 +295,8 @@ pub fn markdown(runs: &[ReportRun]) -> String {
     );
     text += "| scene | board | number | instructions per pixel | frame instructions | prepare instructions | render instructions | flash bytes | static RAM bytes | peak stack bytes | f64 routines | panic symbols |\n";
     text += "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
-    let scene_optimizations = |run: &&ReportRun| run.primitives == Primitives::Scene && run.optimizations == "scene";
+    let chapter_five = |run: &ReportRun| CHAPTER_FIVE_SCENES.iter().any(|file| file.trim_start_matches("scenes/").trim_end_matches(".mts") == run.scene);
+    let scene_optimizations = |run: &&ReportRun| run.primitives == Primitives::Scene && run.optimizations == "scene" && !chapter_five(run);
     for run in runs.iter().filter(scene_optimizations) {
         text += &format!(
             "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
@@ -314,6 +336,45 @@ pub fn markdown(runs: &[ReportRun]) -> String {
             signed_thousands(all.flash_bytes as i64 - own.flash_bytes as i64),
             thousands(own.static_ram_bytes),
             thousands(all.static_ram_bytes)
+        );
+    }
+    text += &chapter_five_table(runs);
+    text
+}
+
+/// The chapter-5 scenes: the ray tree (`snooker-polished`) and antialiasing
+/// (`lattice-antialiased`), with their rays per pixel and the tree's secondary rays.
+fn chapter_five_table(runs: &[ReportRun]) -> String {
+    let chapter_five: Vec<&ReportRun> = runs
+        .iter()
+        .filter(|run| CHAPTER_FIVE_SCENES.iter().any(|file| file.trim_start_matches("scenes/").trim_end_matches(".mts") == run.scene))
+        .collect();
+    if chapter_five.is_empty() {
+        return String::new();
+    }
+    let mut text = String::from(
+        "\nThe thesis's chapter 5 on the chip (README, \"Chapter 5\"): `snooker-polished` (the ray tree:\n\
+         reflective balls, a glass cue ball, two lights, depth 4) and `lattice-antialiased` (corners\n\
+         split twice where they differ by 6 %), with the scene's own `optimize`; rays per pixel counts\n\
+         every primary ray (with antialiasing, every corner and sub-corner), secondary rays the tree's:\n\n\
+         | scene | board | number | instructions per pixel | frame instructions | rays per pixel | secondary rays | flash bytes | static RAM bytes | peak stack bytes | f64 routines | panic symbols |\n\
+         |---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
+    );
+    for run in chapter_five {
+        text += &format!(
+            "| {} | {} | {} | {} | {} | {:.2} | {} | {} | {} | {} | {} | {} |\n",
+            run.scene,
+            run.board.name(),
+            run.number,
+            thousands(run.instructions_per_pixel),
+            thousands(run.frame_instructions),
+            run.rays_traced as f64 / run.pixels.max(1) as f64,
+            thousands(run.secondary_rays),
+            thousands(run.flash_bytes),
+            thousands(run.static_ram_bytes),
+            thousands(run.stack_peak_bytes),
+            run.f64_symbols,
+            run.panic_symbols
         );
     }
     text
@@ -422,7 +483,7 @@ mod tests {
 
     #[test]
     fn a_filter_keeps_only_its_runs() {
-        assert_eq!(plan(&ReportFilter::default()).len(), 2 * 2 * NUMBERS.len() * 2 + 2 * 2);
+        assert_eq!(plan(&ReportFilter::default()).len(), 2 * 2 * NUMBERS.len() * 2 + 2 * 2 + 2 * 2 * CHAPTER_FIVE_NUMBERS.len());
         let one = ReportFilter { scene: Some("snooker".into()), board: Some(Board::Mps2An386), number: Some("f32".into()), ..Default::default() };
         let kept: Vec<(Primitives, &str)> = plan(&one).into_iter().map(|(_, _, _, primitives, optimizations)| (primitives, optimizations)).collect();
         assert_eq!(kept, [(Primitives::Scene, "scene"), (Primitives::Scene, "none"), (Primitives::All, "scene")]);
@@ -454,6 +515,8 @@ mod tests {
             f64_symbols: 30,
             panic_symbols: 5,
             fmt_symbols: 2,
+            rays_traced: 3000,
+            secondary_rays: 0,
         };
         let table = markdown(&[run]);
         assert!(table.contains("| instructions per pixel | frame instructions | prepare instructions | render instructions |"), "{table}");
@@ -486,13 +549,16 @@ mod tests {
             f64_symbols: 5,
             panic_symbols: 6,
             fmt_symbols: 7,
+            rays_traced: 8,
+            secondary_rays: 9,
         };
         assert_eq!(
             json(&[run]),
             "{\"runs\":[\n{\"scene\":\"snooker\",\"board\":\"lm3s6965evb\",\"number\":\"f32\",\"primitives\":\"scene\",\
              \"optimizations\":\"scene\",\"width\":128,\"height\":64,\"instructions\":8192,\"frame_instructions\":8192,\
              \"prepare_instructions\":192,\"render_instructions\":8000,\"pixels\":8192,\"instructions_per_pixel\":1,\
-             \"flash_bytes\":2,\"static_ram_bytes\":3,\"stack_peak_bytes\":4,\"f64_symbols\":5,\"panic_symbols\":6,\"fmt_symbols\":7}\n]}\n"
+             \"flash_bytes\":2,\"static_ram_bytes\":3,\"stack_peak_bytes\":4,\"f64_symbols\":5,\"panic_symbols\":6,\"fmt_symbols\":7,\
+             \"rays_traced\":8,\"secondary_rays\":9}\n]}\n"
         );
     }
 }
