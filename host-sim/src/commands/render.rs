@@ -224,6 +224,10 @@ fn thesis_table(rendered: &Rendered) -> String {
         s.shadow_tests,
         per(s.shadow_tests, s.shadow_rays),
     );
+    // Antialiasing traces more than one ray a pixel (chapter 5).
+    if s.rays_traced > s.pixels {
+        table.push_str(&format!("rays per pixel    {:.2}\n", per(s.rays_traced, s.pixels)));
+    }
     // The ray tree (chapter 5), when the scene has one.
     let secondary = s.secondary_rays_total();
     if secondary > 0 {
