@@ -161,7 +161,7 @@ pub trait Number:
     const DEPTH_BOUNDS_HOLD: bool = true;
 
     /// The documented range of scene values: the largest magnitude [`Number::can_represent`]
-    /// accepts. Infinite for `f64`.
+    /// accepts (10¹⁸ for `f64` and `f32`).
     const SCENE_LIMIT: f64 = f64::INFINITY;
 
     /// Whether a scene value (a coordinate, a light position, a matrix entry) of this size is
