@@ -84,17 +84,16 @@ fn finding_capsule_range_negation_overflow() {
     checks::render_input(&std::fs::read(grazing).unwrap());
 }
 
-/// The open findings' inputs that still differ (see below).
-const STILL_OPEN: [&str; 1] = ["fixed16-pixelbuffer"];
-
-/// Finding 2 (docs/fuzzing.md), fixed but for Pixelbuffer in fixed16: optimization
-/// combinations changed the image in f32-micromath (Extents, Sortlist) and fixed16 (Extents,
-/// Sortlist); the culls whose bounds do not hold in those types (shadow culling, Sortlist's
-/// exit) are now off there (deviation 30).
+/// Findings 2 and 3 (docs/fuzzing.md), fixed: optimization combinations changed the image in
+/// f32-micromath (Extents, Sortlist) and fixed16 (Extents, Sortlist; the culls whose bounds do
+/// not hold in those types are off there, deviation 30), Pixelbuffer and Extents in fixed16 for
+/// a cube 8000 across (its silhouette's disc squared hundreds of pixels and saturated; now
+/// scaled first), and f64 with an eye 4e39 away (now out of f64's range). Every input, every
+/// number type compared.
 #[test]
 fn finding_optimizations_changed_the_image_in_f32_micromath_and_fixed16() {
-    let fixed: Vec<_> = inputs("fuzz/regressions/render-open").into_iter().filter(|path| !STILL_OPEN.iter().any(|name| path.ends_with(name))).collect();
-    assert_eq!(fixed.len(), 4, "the findings' inputs are kept");
+    let fixed = inputs("fuzz/regressions/render-open");
+    assert_eq!(fixed.len(), 5, "the findings' inputs are kept");
     for path in fixed {
         let data = std::fs::read(&path).unwrap();
         if std::panic::catch_unwind(|| checks::render_comparing(&data, &[])).is_err() {
@@ -113,21 +112,6 @@ fn finding_an_eye_4e39_away_is_out_of_f64s_range() {
     let description = microtrace::parser::parse::<64>(&std::fs::read(&path).unwrap()).unwrap();
     let error = microtrace::scene::Scene::<f64, 64>::prepare(&description).unwrap_err();
     assert_eq!(error.to_string(), "line 5: the eye reaches 4.111111111111111e39, too large for the number type `f64`, whose documented range for scene values is ±1e18 (see docs/hard-cases.md)");
-}
-
-/// Open (docs/fuzzing.md): Pixelbuffer changes the image in fixed16 for a cube 8000 across (a
-/// quarter of the type's range). Ignored until fixed;
-/// the render target leaves fixed16 uncompared until then (`checks::IDENTITY_KNOWN_TO_DIFFER`).
-#[test]
-#[ignore = "open finding: Pixelbuffer changes the image in fixed16 near its range (docs/fuzzing.md)"]
-fn finding_pixelbuffer_changes_the_image_in_fixed16_near_its_range() {
-    for name in STILL_OPEN {
-        let path = inputs("fuzz/regressions/render-open").into_iter().find(|path| path.ends_with(name)).expect("the input is kept");
-        let data = std::fs::read(&path).unwrap();
-        if std::panic::catch_unwind(|| checks::render_comparing(&data, &[])).is_err() {
-            panic!("{}: an optimization combination differs from --opt none", path.display());
-        }
-    }
 }
 
 #[test]

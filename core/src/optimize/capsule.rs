@@ -145,6 +145,9 @@ impl<N: Number> ScreenMap<N> {
                 // The eye's image position plus span times the ratio.
                 let base = alpha * (eye.x - x0) + beta * (eye.y - y0) + constant;
                 let (u, v) = (base + span * low, base + span * high);
+                if near_saturation(u) || near_saturation(v) {
+                    return None;
+                }
                 *range = (u.min(v), u.max(v));
             }
             return Some(Some(ranges));
@@ -160,6 +163,11 @@ impl<N: Number> ScreenMap<N> {
             let slope = -(alpha * kx + beta * ky);
             let value = alpha * (centre.x - x0) + beta * (centre.y - y0) + slope * (centre.z - self.view_plane) + constant;
             let reach = radius * Vector3::new(alpha, beta, slope).length();
+            // A fixed-point range saturates silently (fuzzing: a cube 8000 across in fixed16):
+            // near the type's limit the ball covers the whole screen instead.
+            if near_saturation(value.abs() + reach) {
+                return None;
+            }
             *range = (value - reach, value + reach);
         }
         Some(Some(ranges))
@@ -373,6 +381,13 @@ fn disc<N: Number>(height: u16, ranges: &[(N, N); FUNCTIONS]) -> ([N; 2], N) {
     let shift = N::from_i32(i32::from(height) - 1);
     let (sum, difference) = (centre[0] + centre[1], centre[0] - centre[1] + shift);
     let (sigma1, sigma2, delta1, delta2) = (s1 - sum, s2 - sum, d1 - difference, d2 - difference);
+    // Squares of hundreds of pixels saturate in fixed point (fuzzing: a cube 8000 across in
+    // fixed16 got a disc far too small): the distances are scaled to below 64 first and the
+    // radius scaled back. Floating point needs no scaling.
+    let largest = [a, b, sigma1, sigma2, delta1, delta2].iter().fold(N::ZERO, |m, value| m.max(value.abs()));
+    let exponent = if N::FLOATING_POINT { 0 } else { largest.binary_exponent().map_or(0, |e| (e - 5).max(0)) };
+    let scaled = |value: N| value.times_power_of_two(-exponent);
+    let (a, b, sigma1, sigma2, delta1, delta2) = (scaled(a), scaled(b), scaled(sigma1), scaled(sigma2), scaled(delta1), scaled(delta2));
     let within = |value: N, limit: N| value.max(-limit).min(limit);
     let mut farthest = N::ZERO;
     let mut consider = |u: N, v: N| farthest = farthest.max(u * u + v * v);
@@ -390,7 +405,8 @@ fn disc<N: Number>(height: u16, ranges: &[(N, N); FUNCTIONS]) -> ([N; 2], N) {
             consider(within(half(-delta, sigma), a), within(half(delta, sigma), b));
         }
     }
-    let radius = farthest.sqrt();
+    // Rounded up by a step of the scaled type, so the scaling never shrinks the disc.
+    let radius = (farthest.sqrt() + N::RESOLUTION).times_power_of_two(exponent);
     let largest = centre[0].abs().max(centre[1].abs()) + radius;
     let margin = N::ONE.times_power_of_two(PIXEL_MARGIN_EXPONENT) + largest.times_power_of_two(-16) + N::RESOLUTION.times_power_of_two(17);
     (centre, radius + radius.times_power_of_two(N::SQRT_ERROR_EXPONENT) + margin)
@@ -616,4 +632,10 @@ mod tests {
         }
         assert!(nonempty > 300 && discs > 20, "the cases must reach the stadiums: {nonempty} nonempty, {discs} discs");
     }
+}
+
+/// Whether a screen coordinate lies within a quarter of the number type's largest value, where
+/// a fixed-point sum may have saturated (never for floating point's).
+fn near_saturation<N: Number>(value: N) -> bool {
+    value.abs() >= N::MAX.times_power_of_two(-2)
 }
