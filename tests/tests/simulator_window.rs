@@ -309,3 +309,186 @@ fn no_display_points_at_render() {
     assert!(!output.status.success());
     assert!(String::from_utf8_lossy(&output.stderr).contains("no-such-scene.mts"));
 }
+
+/// The window's image area (the top-left 132x120 pixels) of a screenshot.
+fn image_area((width, _, window): &(u32, u32, Vec<[u8; 3]>)) -> Vec<[u8; 3]> {
+    (0..120).flat_map(|y| (0..132).map(move |x| (y * width + x) as usize)).map(|i| window[i]).collect()
+}
+
+/// Whether the screenshot shows `text` as the panel writes it (FONT_6X10 in light grey on
+/// black, `view/panel.rs`) somewhere right of the image.
+fn panel_shows((width, height, window): &(u32, u32, Vec<[u8; 3]>), text: &str) -> bool {
+    use embedded_graphics::mono_font::{ascii::FONT_6X10, MonoTextStyle};
+    use embedded_graphics::pixelcolor::BinaryColor;
+    use embedded_graphics::prelude::*;
+    use embedded_graphics::text::{Baseline, Text};
+    struct Glyphs {
+        width: u32,
+        lit: Vec<bool>,
+    }
+    impl OriginDimensions for Glyphs {
+        fn size(&self) -> Size {
+            Size::new(self.width, 10)
+        }
+    }
+    impl DrawTarget for Glyphs {
+        type Color = BinaryColor;
+        type Error = std::convert::Infallible;
+        fn draw_iter<I: IntoIterator<Item = Pixel<BinaryColor>>>(&mut self, pixels: I) -> Result<(), Self::Error> {
+            for Pixel(point, colour) in pixels {
+                if (0..self.width as i32).contains(&point.x) && (0..10).contains(&point.y) {
+                    self.lit[(point.y as u32 * self.width + point.x as u32) as usize] = colour.is_on();
+                }
+            }
+            Ok(())
+        }
+    }
+    let glyph_width = 6 * text.chars().count() as u32;
+    let mut glyphs = Glyphs { width: glyph_width, lit: vec![false; (glyph_width * 10) as usize] };
+    let _ = Text::with_baseline(text, Point::zero(), MonoTextStyle::new(&FONT_6X10, BinaryColor::On), Baseline::Top).draw(&mut glyphs);
+    let Some(first) = glyphs.lit.iter().position(|lit| *lit) else { return true };
+    let (first_x, first_y) = (first as u32 % glyph_width, first as u32 / glyph_width);
+    let text_colour = [230, 230, 230];
+    (0..height.saturating_sub(9)).any(|top| {
+        (132..width.saturating_sub(glyph_width - 1)).any(|left| {
+            window[((top + first_y) * width + left + first_x) as usize] == text_colour
+                && (0..10).all(|y| (0..glyph_width).all(|x| (window[((top + y) * width + left + x) as usize] == text_colour) == glyphs.lit[(y * glyph_width + x) as usize]))
+        })
+    })
+}
+
+/// Asserts that the panel shows each part of a ray line `view` printed.
+fn assert_panel_shows(screenshot: &(u32, u32, Vec<[u8; 3]>), line: &str) {
+    for part in line.split("; ") {
+        assert!(panel_shows(screenshot, part), "the panel does not show {part:?}");
+    }
+}
+
+/// `microtrace render` of the scene `text` (written to a file of its own) at 132x120.
+fn render_text(binary: &Path, name: &str, text: &str) -> Vec<[u8; 3]> {
+    static CALLS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let call = CALLS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let dir = std::env::temp_dir().join(format!("microtrace-view-{}-render-{call}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let (scene, image) = (dir.join(format!("{name}.mts")), dir.join("render.png"));
+    std::fs::write(&scene, text).unwrap();
+    let output = Command::new(binary).arg("render").arg(&scene).args(["--size", "132x120", "--out"]).arg(&image).output().expect("run microtrace render");
+    assert!(output.status.success(), "render {name}: {}", String::from_utf8_lossy(&output.stderr));
+    let (width, height, pixels) = read_png(&image);
+    assert_eq!((width, height), (132, 120));
+    let _ = std::fs::remove_dir_all(&dir);
+    pixels
+}
+
+fn scene_text(scene: &str) -> String {
+    std::fs::read_to_string(workspace().join("scenes").join(format!("{scene}.mts"))).unwrap()
+}
+
+/// The ray lines `view` prints after each render (the panel's depth, antialiasing, rays per
+/// pixel and secondary rays), in order.
+fn ray_lines(stderr: &str) -> Vec<&str> {
+    stderr.lines().filter(|line| line.starts_with("depth ")).collect()
+}
+
+/// The rays per pixel a ray line states.
+fn rays_per_pixel(line: &str) -> f64 {
+    let after = line.split("rays per pixel ").nth(1).unwrap_or_else(|| panic!("no rays per pixel in {line:?}"));
+    after.split_whitespace().next().and_then(|number| number.parse().ok()).unwrap_or_else(|| panic!("no number in {line:?}"))
+}
+
+/// The secondary rays a ray line states (0: none).
+fn secondary_rays(line: &str) -> u64 {
+    match line.split("secondary rays ").nth(1) {
+        Some(after) => after.split(',').next().and_then(|number| number.parse().ok()).unwrap_or_else(|| panic!("no number in {line:?}")),
+        None => {
+            assert!(line.contains("no secondary rays"), "{line:?}");
+            0
+        }
+    }
+}
+
+/// `T` cycles the ray tree's depth from the scene's own (snooker-polished: 4) up to 8 and round
+/// to 1, re-rendering each time: at depth 1 the window shows the scene with every `reflect` and
+/// `transmit` zeroed (what `render` makes of that file; the glass ball's lighter shadow falls on
+/// no ball in this view), and eight presses bring back the scene's own image.
+#[test]
+fn the_depth_key_cycles_the_ray_tree() {
+    let Some((display, _xvfb)) = display_or_skip() else { return };
+    let binary = microtrace_binary();
+    let scene = "snooker-polished";
+    let (own, stderr) = screenshot_and_stderr(&binary, &display, scene, &[]);
+    assert_eq!(ray_lines(&stderr).len(), 1, "{stderr}");
+    let own_line = ray_lines(&stderr)[0].to_owned();
+    assert!(own_line.starts_with("depth 4 ") && own_line.contains("secondary rays "), "{stderr}");
+
+    let (shallow, stderr) = screenshot_and_stderr(&binary, &display, scene, &["--keys", "TTTTT"]);
+    let depths: Vec<&str> = ray_lines(&stderr).iter().map(|line| line.split("  ").next().unwrap_or_default()).collect();
+    assert_eq!(depths, ["depth 4", "depth 5", "depth 6", "depth 7", "depth 8", "depth 1"], "{stderr}");
+    let last = ray_lines(&stderr)[5];
+    assert!(last.contains("no secondary rays"), "{last}");
+    // Deeper trees trace more secondary rays.
+    let secondary: Vec<u64> = ray_lines(&stderr).iter().map(|line| secondary_rays(line)).collect();
+    assert!(secondary[0] > 0 && secondary[0] < secondary[1] && secondary[1] <= secondary[4] && secondary[5] == 0, "{secondary:?}");
+
+    let zeroed: String = scene_text(scene)
+        .lines()
+        .map(|line| match line.split_whitespace().next() {
+            Some(keyword @ ("reflect" | "transmit")) => format!("  {keyword} 0\n"),
+            _ => format!("{line}\n"),
+        })
+        .collect();
+    assert!(zeroed != scene_text(scene));
+    let expected = render_text(&binary, "zeroed", &zeroed);
+    let shown = image_area(&shallow);
+    let differing = shown.iter().zip(&expected).filter(|(a, b)| a != b).count();
+    assert_eq!(differing, 0, "depth 1: {differing} pixels differ from the scene without reflection and transmission");
+    assert!(image_area(&own) != shown, "depth 4 and depth 1 look the same: the scene's tree is not drawn");
+    assert_panel_shows(&own, &own_line);
+    assert_panel_shows(&shallow, last);
+    assert!(!panel_shows(&shallow, "depth 4") && !panel_shows(&own, "no secondary rays"), "the panel shows a depth it is not at");
+
+    let (round, stderr) = screenshot_and_stderr(&binary, &display, scene, &["--keys", "TTTTTTTT"]);
+    assert!(ray_lines(&stderr).last().is_some_and(|line| line.starts_with("depth 4 ")), "{stderr}");
+    assert!(image_area(&round) == image_area(&own), "eight presses of T should bring back the scene's depth");
+}
+
+/// `A` turns antialiasing on at level 1 with the threshold 0.1 when the scene has none
+/// (snooker-polished: the image is then `render`'s of the scene with `antialias 0.1 1`), and
+/// cycles the scene's own (lattice-antialiased: 0.06, level 2) up to level 4 and off (the image
+/// is then the plain lattice's; off to level 1 again is `rays.rs`'s unit test). Rays per pixel
+/// (in the panel, and printed with it) rise with antialiasing and with each level, and are at
+/// most 1 without (Pixelbuffer on).
+#[test]
+fn the_antialiasing_key_cycles_the_levels_and_changes_rays_per_pixel() {
+    let Some((display, _xvfb)) = display_or_skip() else { return };
+    let binary = microtrace_binary();
+
+    let (plain, stderr) = screenshot_and_stderr(&binary, &display, "snooker-polished", &[]);
+    let before = ray_lines(&stderr)[0].to_owned();
+    assert!(before.contains("antialias off") && rays_per_pixel(&before) <= 1.0, "{before}");
+    let (smooth, stderr) = screenshot_and_stderr(&binary, &display, "snooker-polished", &["--keys", "A"]);
+    let after = *ray_lines(&stderr).last().unwrap();
+    assert!(after.contains("antialias L1 threshold 0.10") && rays_per_pixel(after) > rays_per_pixel(&before), "{after}");
+    let expected = render_text(&binary, "antialiased", &format!("{}\nantialias 0.1 1\n", scene_text("snooker-polished")));
+    let shown = image_area(&smooth);
+    assert!(shown != image_area(&plain), "antialiasing changed nothing");
+    let differing = shown.iter().zip(&expected).filter(|(a, b)| a != b).count();
+    assert_eq!(differing, 0, "A: {differing} pixels differ from the scene rendered with `antialias 0.1 1`");
+    assert_panel_shows(&plain, &before);
+    assert_panel_shows(&smooth, after);
+    assert!(!panel_shows(&smooth, "antialias off") && !panel_shows(&plain, "antialias L1"), "the panel shows antialiasing it is not at");
+
+    let (off, stderr) = screenshot_and_stderr(&binary, &display, "lattice-antialiased", &["--keys", "AAA"]);
+    let lines = ray_lines(&stderr);
+    let settings: Vec<&str> = lines.iter().map(|line| line.split("; ").next().unwrap_or_default()).collect();
+    assert_eq!(settings, ["depth 5  antialias L2 threshold 0.06", "depth 5  antialias L3 threshold 0.06", "depth 5  antialias L4 threshold 0.06", "depth 5  antialias off"], "{stderr}");
+    let per_pixel: Vec<f64> = lines.iter().map(|line| rays_per_pixel(line)).collect();
+    assert!(per_pixel[0] > 1.0 && per_pixel[0] < per_pixel[1] && per_pixel[1] < per_pixel[2] && per_pixel[3] <= 1.0, "{per_pixel:?}");
+    let expected = render_text(&binary, "lattice", &scene_text("lattice"));
+    let differing = image_area(&off).iter().zip(&expected).filter(|(a, b)| a != b).count();
+    assert_eq!(differing, 0, "antialiasing off: {differing} pixels differ from the plain lattice");
+    assert_panel_shows(&off, lines[3]);
+    let (own, stderr) = screenshot_and_stderr(&binary, &display, "lattice-antialiased", &[]);
+    assert!(image_area(&own) != image_area(&off), "the lattice's antialiasing changed nothing");
+    assert_panel_shows(&own, ray_lines(&stderr)[0]);
+}

@@ -5,9 +5,12 @@
 //! and the render time, the key help, and a preview of a display the firmware drives (the
 //! 128x64 grey OLED, a 1-bit SSD1306 through the dither, a 240x240 RGB565 panel). The
 //! overlay draws what the optimizations see: extents and grid cells on the image, and beside
-//! the panel a plan view of the bounding volumes with Sortlist's depth ranges.
+//! the panel a plan view of the bounding volumes with Sortlist's depth ranges. `T` and `A`
+//! cycle the ray tree's depth and the antialiasing (chapter 5), and the panel shows the rays
+//! per pixel and the secondary rays they cost.
 
-use std::path::PathBuf;
+use std::collections::VecDeque;
+use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use anyhow::Context;
@@ -17,10 +20,11 @@ use embedded_graphics::mono_font::MonoTextStyle;
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 use embedded_graphics::text::{Baseline, Text};
+use embedded_graphics_simulator::sdl2::Keycode;
 use embedded_graphics_simulator::{OutputSettings, OutputSettingsBuilder, SimulatorDisplay, SimulatorEvent};
 use microtrace::pixel::FrameBuffer;
 use microtrace::render::{render_pga, render_pga_progressive, render_rgb, render_rgb_progressive, PassStatistics, Statistics};
-use microtrace::scene::{Optimizations, Scene};
+use microtrace::scene::{Antialias, Optimizations, Scene};
 
 use crate::commands::render::statistics_table;
 use crate::files;
@@ -37,6 +41,7 @@ use ui::fill::PixelbufferFill;
 use ui::overlay::ScreenExtent;
 use ui::plan::PlanView;
 use ui::preview::DisplayKind;
+use ui::rays;
 use ui::window::View;
 
 #[derive(clap::Args, Clone, Debug)]
@@ -82,6 +87,11 @@ pub struct ViewArgs {
     /// Close the window when the render has finished.
     #[arg(long)]
     pub exit_when_done: bool,
+    /// Press these keys once the first render has finished, one after another as if typed,
+    /// each re-rendering as it would (e.g. `TTA`: depth up twice, antialiasing on);
+    /// --screenshot and --exit-when-done apply after the last. For scripts and tests.
+    #[arg(long, value_name = "KEYS", value_parser = keys::parse_script)]
+    pub keys: Option<keys::Script>,
 }
 
 /// What the keys change.
@@ -92,6 +102,20 @@ struct Settings {
     fill: bool,
     progressive: bool,
     display: DisplayKind,
+    /// The threshold `A` turns antialiasing on with: the scene's, else [`rays::DEFAULT_THRESHOLD`].
+    threshold: f64,
+}
+
+/// What a key changed, and so what has to be done again.
+enum Change {
+    /// The image: render again.
+    Image,
+    /// Only what is drawn over and beside it: draw the window again.
+    Window,
+    /// Nothing (the change was refused, with the reason on stderr).
+    Nothing,
+    SavePng,
+    Quit,
 }
 
 /// One finished render: the image, its statistics and what the overlay draws.
@@ -134,7 +158,16 @@ pub fn run(args: ViewArgs) -> anyhow::Result<()> {
     let output = OutputSettingsBuilder::new().scale(args.scale).build();
     let title = format!("MicroTrace — {}", args.scene.display());
     let mut view = View::open(&title, &output, &display)?;
-    let mut settings = Settings { number: args.number, mode: args.mode, overlay: args.overlay, fill: args.fill, progressive: args.progressive, display: args.display };
+    let mut settings = Settings {
+        number: args.number,
+        mode: args.mode,
+        overlay: args.overlay,
+        fill: args.fill,
+        progressive: args.progressive,
+        display: args.display,
+        threshold: scene.antialias.map_or(rays::DEFAULT_THRESHOLD, |antialias| antialias.threshold),
+    };
+    let mut script: VecDeque<Keycode> = args.keys.clone().map(|script| script.0).unwrap_or_default().into();
 
     loop {
         let finished = render(&scene, &settings, &mut display, &mut view).map_err(|error| scene_file::in_file(&args.scene, error))?;
@@ -147,83 +180,134 @@ pub fn run(args: ViewArgs) -> anyhow::Result<()> {
             mode_name(settings.mode),
             optimization_names(scene.optimizations)
         );
+        // The panel's ray lines, for scripts: `--keys` then reads what the panel shows.
+        let ray_lines = ray_lines(&scene, &finished.rendered);
+        eprintln!("{}", ray_lines.iter().map(|line| line.trim()).filter(|line| !line.is_empty()).collect::<Vec<_>>().join("; "));
         let mut preview = ui::preview::render(&scene, settings.number, settings.display).map_err(|error| scene_file::in_file(&args.scene, error))?;
         draw_finished(&scene, &settings, &finished, &preview, &mut display, Point::new(panel_x as i32, 4));
         view.update(&display);
-        if let Some(path) = &args.screenshot {
-            display
-                .to_rgb_output_image(&OutputSettings::default())
-                .save_png(path)
-                .with_context(|| format!("cannot write the screenshot {}", path.display()))?;
-            eprintln!("screenshot written to {}", path.display());
-            return Ok(());
-        }
-        if args.exit_when_done {
-            return Ok(());
-        }
-        // Wait for a key that changes something.
+        // Wait for a key that changes something: the script's next, else the window's.
         'waiting: loop {
-            for event in view.update(&display) {
-                let action = match event {
-                    SimulatorEvent::Quit => return Ok(()),
-                    SimulatorEvent::KeyDown { keycode, repeat: false, .. } => keys::action(keycode),
-                    _ => None,
-                };
-                let Some(action) = action else { continue };
-                let o = &mut scene.optimizations;
-                match action {
-                    Action::Quit => return Ok(()),
-                    Action::TogglePixelbuffer => o.pixelbuffer = !o.pixelbuffer,
-                    Action::ToggleExtents => o.extents = !o.extents,
-                    Action::ToggleGrid => o.grid = !o.grid,
-                    Action::ToggleSortlist => o.sortlist = !o.sortlist,
-                    Action::CycleNumber => match next_number_type(&scene, settings.number, &args.scene) {
-                        Some(number) => settings.number = number,
-                        None => continue,
-                    },
-                    Action::SwitchMode => settings.mode = if settings.mode == Mode::Pga { Mode::Rgb } else { Mode::Pga },
-                    Action::ToggleDither => scene.dither = !scene.dither,
-                    Action::ToggleShadows => scene.shadows = !scene.shadows,
-                    Action::ToggleProgressive => settings.progressive = !settings.progressive,
-                    Action::ToggleOverlay | Action::ToggleFill | Action::CycleDisplay => {
-                        match action {
-                            Action::ToggleOverlay => settings.overlay = !settings.overlay,
-                            Action::ToggleFill => settings.fill = !settings.fill,
-                            _ => {
-                                settings.display = settings.display.next();
-                                preview = ui::preview::render(&scene, settings.number, settings.display)
-                                    .map_err(|error| scene_file::in_file(&args.scene, error))?;
-                            }
+            let actions: Vec<Action> = match script.pop_front() {
+                Some(key) => keys::action(key).into_iter().collect(),
+                None => {
+                    if let Some(path) = &args.screenshot {
+                        display
+                            .to_rgb_output_image(&OutputSettings::default())
+                            .save_png(path)
+                            .with_context(|| format!("cannot write the screenshot {}", path.display()))?;
+                        eprintln!("screenshot written to {}", path.display());
+                        return Ok(());
+                    }
+                    if args.exit_when_done {
+                        return Ok(());
+                    }
+                    let mut actions = Vec::new();
+                    for event in view.update(&display) {
+                        match event {
+                            SimulatorEvent::Quit => return Ok(()),
+                            SimulatorEvent::KeyDown { keycode, repeat: false, .. } => actions.extend(keys::action(keycode)),
+                            _ => {}
+                        }
+                    }
+                    actions
+                }
+            };
+            for action in actions {
+                match apply(action, &mut scene, &mut settings, &args.scene) {
+                    Change::Quit => return Ok(()),
+                    Change::Image => break 'waiting,
+                    Change::Window => {
+                        if action == Action::CycleDisplay {
+                            preview = ui::preview::render(&scene, settings.number, settings.display).map_err(|error| scene_file::in_file(&args.scene, error))?;
                         }
                         draw_finished(&scene, &settings, &finished, &preview, &mut display, Point::new(panel_x as i32, 4));
-                        continue;
                     }
-                    Action::SavePng => {
-                        save_png(&args, &finished.rendered);
-                        continue;
-                    }
+                    Change::SavePng => save_png(&args, &finished.rendered),
+                    Change::Nothing => {}
                 }
-                break 'waiting;
             }
         }
     }
 }
 
+/// Applies what a key does to the scene and the settings.
+fn apply(action: Action, scene: &mut HostScene, settings: &mut Settings, path: &Path) -> Change {
+    let o = &mut scene.optimizations;
+    match action {
+        Action::Quit => return Change::Quit,
+        Action::TogglePixelbuffer => o.pixelbuffer = !o.pixelbuffer,
+        Action::ToggleExtents => o.extents = !o.extents,
+        Action::ToggleGrid => o.grid = !o.grid,
+        Action::ToggleSortlist => o.sortlist = !o.sortlist,
+        Action::CycleNumber => match next_number_type(scene, settings.number, path) {
+            Some(number) => settings.number = number,
+            None => return Change::Nothing,
+        },
+        Action::SwitchMode => settings.mode = if settings.mode == Mode::Pga { Mode::Rgb } else { Mode::Pga },
+        Action::ToggleDither => scene.dither = !scene.dither,
+        Action::ToggleShadows => scene.shadows = !scene.shadows,
+        Action::ToggleProgressive => settings.progressive = !settings.progressive,
+        Action::CycleDepth => scene.depth = rays::next_depth(scene.depth),
+        Action::CycleAntialias => match next_antialias(scene, settings, path) {
+            Some(antialias) => scene.antialias = antialias,
+            None => return Change::Nothing,
+        },
+        Action::ToggleOverlay => {
+            settings.overlay = !settings.overlay;
+            return Change::Window;
+        }
+        Action::ToggleFill => {
+            settings.fill = !settings.fill;
+            return Change::Window;
+        }
+        Action::CycleDisplay => {
+            settings.display = settings.display.next();
+            return Change::Window;
+        }
+        Action::SavePng => return Change::SavePng,
+    }
+    Change::Image
+}
+
+/// Whether the scene prepares in `number`, with the preparation error naming the file if not.
+fn prepares(scene: &HostScene, number: NumberType, path: &Path) -> Result<(), scene_file::SceneFileError> {
+    let prepared = with_number_type!(number, N => Scene::<N, HOST_MAX_OBJECTS>::prepare(scene).map(|_| ()));
+    prepared.map_err(|error| scene_file::SceneFileError { path: path.to_owned(), error })
+}
+
+/// The next antialiasing in `A`'s cycle (off, L1..L4 at the settings' threshold) that the scene
+/// prepares with in the current number type; the levels it does not (a sample grid beyond the
+/// camera's range) are skipped with the reason on stderr. `None`: none does.
+fn next_antialias(scene: &HostScene, settings: &Settings, path: &Path) -> Option<Option<Antialias>> {
+    let mut trial = Box::new(scene.clone());
+    for _ in 0..=rays::MAX_LEVELS {
+        trial.antialias = rays::next_antialias(trial.antialias, settings.threshold);
+        match prepares(&trial, settings.number, path) {
+            Ok(()) => return Some(trial.antialias),
+            Err(error) => eprintln!("microtrace: skipping {}: {error}", rays::antialias_label(trial.antialias)),
+        }
+    }
+    None
+}
+
+/// The panel's lines about the rays (see [`rays::lines`]).
+fn ray_lines(scene: &HostScene, rendered: &Rendered) -> [String; rays::LINES] {
+    let pixels = u64::from(rendered.width()) * u64::from(rendered.height());
+    rays::lines(scene.depth, scene.antialias, &rendered.statistics, pixels)
+}
+
 /// The next number type after `current` that can represent the scene; the ones that cannot
 /// (beyond a fixed-point type's range) are skipped with their preparation error on stderr,
 /// rather than ending the window.
-fn next_number_type(scene: &HostScene, current: NumberType, path: &std::path::Path) -> Option<NumberType> {
+fn next_number_type(scene: &HostScene, current: NumberType, path: &Path) -> Option<NumberType> {
     let all = NumberType::ALL;
     let at = all.iter().position(|n| *n == current).unwrap_or(0);
-    (1..all.len()).map(|step| all[(at + step) % all.len()]).find(|&number| {
-        let prepared = with_number_type!(number, N => Scene::<N, HOST_MAX_OBJECTS>::prepare(scene).map(|_| ()));
-        match prepared {
-            Ok(()) => true,
-            Err(error) => {
-                let error = scene_file::SceneFileError { path: path.to_owned(), error };
-                eprintln!("microtrace: skipping {}: {error}", number.name());
-                false
-            }
+    (1..all.len()).map(|step| all[(at + step) % all.len()]).find(|&number| match prepares(scene, number, path) {
+        Ok(()) => true,
+        Err(error) => {
+            eprintln!("microtrace: skipping {}: {error}", number.name());
+            false
         }
     })
 }
@@ -265,13 +349,34 @@ fn render(scene: &HostScene, settings: &Settings, display: &mut SimulatorDisplay
         let started = Instant::now();
         let prepared = Box::new(Scene::<N, HOST_MAX_OBJECTS>::prepare(scene).map_err(|error| anyhow::anyhow!("{error}"))?);
         let preprocess = started.elapsed();
+        // With antialiasing the optimizations serve the sample grid (`step` samples a pixel
+        // side): its columns and rows are drawn at the pixels they fall in.
+        let step = prepared.antialias.map_or(1, |antialias| antialias.step());
+        let pixel = |sample: u16, pixels: u16| (sample / step).min(pixels.saturating_sub(1));
         let extents = (0..scene.objects.len())
             .filter_map(|object| prepared.acceleration.extent(object).map(|e| (object, e)))
-            .map(|(object, e)| ScreenExtent { object, columns: (e.first_column, e.last_column), rows: (e.first_row, e.last_row) })
+            .map(|(object, e)| ScreenExtent {
+                object,
+                columns: (pixel(e.first_column, width), pixel(e.last_column, width)),
+                rows: (pixel(e.first_row, height), pixel(e.last_row, height)),
+            })
             .collect();
-        let grid = grid_lines(&prepared.acceleration, width, height);
+        let mut grid = grid_lines(&prepared.acceleration, prepared.camera.width(), prepared.camera.height());
+        if step > 1 {
+            let to_pixels = |lines: &mut Vec<u16>, pixels: u16| {
+                lines.iter_mut().for_each(|line| *line = pixel(*line, pixels));
+                lines.retain(|line| *line > 0);
+                lines.dedup();
+            };
+            to_pixels(&mut grid.columns, width);
+            to_pixels(&mut grid.rows, height);
+            (grid.width, grid.height) = (width, height);
+        }
         let plan = PlanView::of(&*prepared);
-        let fill = PixelbufferFill::record(&*prepared);
+        let mut fill = PixelbufferFill::record(&*prepared);
+        if prepared.antialias.is_some() {
+            fill = fill.of_pixels(step, width, height);
+        }
         let mut statistics = Statistics::default();
         // Progressive: the passes go straight to the window, each drawn as it finishes.
         let mut passes = settings.progressive.then(PassStatistics::default);
@@ -339,11 +444,13 @@ fn draw_finished(
     }
     ui::preview::draw(preview, display, panel + Point::new(1, 1));
     let s = &rendered.statistics;
+    let [tree, per_pixel, secondary, generations] = ray_lines(scene, rendered);
     let lines = vec![
         format!("{} (above)", preview.kind.label()),
         format!("{}x{} {} {}", rendered.width(), rendered.height(), settings.number.name(), mode_name(settings.mode)),
         format!("opt {}", optimization_names(scene.optimizations)),
         format!("shadows {}  dither {}", on(scene.shadows), on(scene.dither)),
+        tree,
         format!("overlay {}  fill {} ({} px)", on(settings.overlay), on(settings.fill), finished.fill.count()),
         format!("preprocess {:.1} ms", rendered.preprocess.as_secs_f64() * 1e3),
         format!("trace      {:.1} ms", rendered.trace.as_secs_f64() * 1e3),
@@ -351,6 +458,9 @@ fn draw_finished(
         format!("ray-object tests {}", s.ro_tests),
         format!("ray-object hits  {}", s.ro_hits),
         format!("shadow rays {} tests {}", s.shadow_rays, s.shadow_tests),
+        per_pixel,
+        secondary,
+        generations,
         match &rendered.passes {
             Some(passes) => format!("progressive, rays {}", passes.passes.map(|p| p.rays_traced.to_string()).join("/")),
             None => "progressive off".to_owned(),
@@ -361,7 +471,7 @@ fn draw_finished(
 }
 
 /// Lines of text in the panel above the key help.
-const PANEL_LINES: usize = 12;
+const PANEL_LINES: usize = 12 + rays::LINES;
 /// Top of the plan view's drawing area (below its title).
 const PLAN_TOP: u32 = 4 + 12;
 

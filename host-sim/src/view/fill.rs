@@ -39,6 +39,23 @@ impl PixelbufferFill {
         fill
     }
 
+    /// The fill of an antialiased render, recorded on its sample grid (the pixels' corners and
+    /// their subdivisions, `step` samples a pixel side), as the image's `width` x `height`
+    /// pixels: a pixel is marked when a sample on its square (edges included) is, i.e. when
+    /// the render traces a ray for it.
+    pub fn of_pixels(&self, step: u16, width: u16, height: u16) -> Self {
+        let step = step.max(1);
+        let mut pixels = Self { width, height, marked: vec![false; usize::from(width) * usize::from(height)] };
+        for y in 0..height {
+            for x in 0..width {
+                let rows = y.saturating_mul(step)..=y.saturating_add(1).saturating_mul(step);
+                let marked = rows.into_iter().any(|sy| (x.saturating_mul(step)..=x.saturating_add(1).saturating_mul(step)).any(|sx| self.is_marked(sx, sy)));
+                pixels.set_pixel(x, y, marked);
+            }
+        }
+        pixels
+    }
+
     pub fn is_marked(&self, x: u16, y: u16) -> bool {
         x < self.width && y < self.height && self.marked[usize::from(y) * usize::from(self.width) + usize::from(x)]
     }
@@ -70,8 +87,42 @@ mod tests {
     use microtrace::pixel::{FrameBuffer, PixelSource};
     use microtrace::render::{render_pga, Statistics};
 
+    use microtrace::pixel::PixelSink;
+
     use super::super::test_scenes::prepared;
     use super::PixelbufferFill;
+
+    /// An antialiased fill on the corners' grid marks the pixels whose squares touch a marked
+    /// sample, and the antialiased lattice's fill covers every pixel that shows an object.
+    #[test]
+    fn an_antialiased_fill_marks_the_pixels_of_its_samples() {
+        // 2 x 1 pixels at step 2: 5 x 3 samples; sample (2, 0) is the corner both pixels share.
+        let mut samples = PixelbufferFill { width: 5, height: 3, marked: vec![false; 15] };
+        samples.set_pixel(2, 0, true);
+        let pixels = samples.of_pixels(2, 2, 1);
+        assert!(pixels.is_marked(0, 0) && pixels.is_marked(1, 0) && pixels.count() == 2);
+        let mut samples = PixelbufferFill { width: 5, height: 3, marked: vec![false; 15] };
+        samples.set_pixel(4, 2, true);
+        let pixels = samples.of_pixels(2, 2, 1);
+        assert!(!pixels.is_marked(0, 0) && pixels.is_marked(1, 0));
+
+        let (_, scene) = prepared("lattice-antialiased");
+        let antialias = scene.antialias.expect("the scene is antialiased");
+        let image = scene.viewport();
+        let (width, height) = (image.width(), image.height());
+        let fill = PixelbufferFill::record(&*scene).of_pixels(antialias.step(), width, height);
+        let mut buffer = vec![0u8; usize::from(width) * usize::from(height)];
+        let mut frame = FrameBuffer::new(&mut buffer, width, height).unwrap();
+        render_pga(&*scene, &mut frame, &mut Statistics::default());
+        assert!(fill.count() > 0 && fill.count() < usize::from(width) * usize::from(height), "the fill marks some pixels, not all");
+        for y in 0..height {
+            for x in 0..width {
+                if frame.get_pixel(x, y) != Some(scene.background) {
+                    assert!(fill.is_marked(x, y), "object pixel ({x}, {y}) not marked");
+                }
+            }
+        }
+    }
 
     /// With Pixelbuffer on, exactly the marked pixels get a primary ray, and every pixel that
     /// shows an object is marked.

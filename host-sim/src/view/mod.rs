@@ -5,6 +5,7 @@ pub mod depth_ranges;
 pub mod fill;
 pub mod keys;
 pub mod preview;
+pub mod rays;
 pub mod overlay;
 pub mod panel;
 pub mod plan;
