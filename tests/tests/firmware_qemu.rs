@@ -196,6 +196,23 @@ fn ray_tree_matches_the_host(board: Board) {
         assert_eq!(run.numbers[key], host, "{name} on {}: {key}", board.name());
     }
     linked_code_is_clean(name, board, &run.numbers);
+    assert!(links_the_ray_tree(&run.elf), "{name} on {}: the ray tree is not linked", board.name());
+}
+
+/// Whether the firmware links the ray tree's walk (`render::ray_tree::trace_tree`).
+fn links_the_ray_tree(elf: &std::path::Path) -> bool {
+    let names = xtask::elf::symbol_names(&std::fs::read(elf).unwrap()).unwrap();
+    names.iter().any(|name| name.contains("microtrace::render::ray_tree::trace_tree"))
+}
+
+/// Only what the scene needs: a build for a scene without reflective or transparent objects (the
+/// thesis's snooker) links none of the ray tree.
+#[test]
+fn a_scene_without_mirrors_links_no_ray_tree() {
+    let run = run_firmware("snooker.mts", Board::Mps2An386);
+    assert!(!links_the_ray_tree(&run.elf), "snooker links the ray tree");
+    let names = xtask::elf::symbol_names(&std::fs::read(&run.elf).unwrap()).unwrap();
+    assert!(!names.iter().any(|name| name.contains("nearest_secondary_hit") || name.contains("space_grid")), "snooker links secondary rays' code");
 }
 
 /// Antialiasing on the firmware (chapter 5): the antialiased lattice renders the host's image

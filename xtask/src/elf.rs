@@ -57,6 +57,13 @@ pub fn function_address(elf: &[u8], name: &str) -> Result<u64, String> {
         .ok_or_else(|| format!("the firmware has no symbol `{name}`"))
 }
 
+/// The demangled names of the ELF's symbols (what a build test looks for: a feature's code
+/// linked or left out).
+pub fn symbol_names(elf: &[u8]) -> Result<Vec<String>, String> {
+    let file = object::File::parse(elf).map_err(|error| format!("not an ELF file: {error}"))?;
+    Ok(file.symbols().filter_map(|symbol| symbol.name().ok().map(demangle)).collect())
+}
+
 /// What the linked-code audit looks for in the firmware's function symbols.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
 pub enum LinkedKind {
