@@ -582,6 +582,12 @@ impl Extent {
     }
 }
 
+/// Whether a screen coordinate lies within a quarter of the number type's largest value, where
+/// a fixed-point sum may have saturated (never for floating point's).
+fn near_saturation<N: Number>(value: N) -> bool {
+    value.abs() >= N::MAX.times_power_of_two(-2)
+}
+
 #[cfg(test)]
 mod tests {
     use super::Stadium;
@@ -632,10 +638,4 @@ mod tests {
         }
         assert!(nonempty > 300 && discs > 20, "the cases must reach the stadiums: {nonempty} nonempty, {discs} discs");
     }
-}
-
-/// Whether a screen coordinate lies within a quarter of the number type's largest value, where
-/// a fixed-point sum may have saturated (never for floating point's).
-fn near_saturation<N: Number>(value: N) -> bool {
-    value.abs() >= N::MAX.times_power_of_two(-2)
 }

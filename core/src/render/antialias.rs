@@ -62,8 +62,9 @@ impl<N: Number, M: Mode<N>, const MAX_OBJECTS: usize, const DEPTH: usize> Sample
         let pixel = self.scene.camera.pixel(x, y);
         let colour = match primary_surface(self.scene, pixel, statistics, cache, self.culling) {
             None => self.mode.background(),
-            Some((at, material, lighting)) => {
-                let local = self.mode.local(&material, lighting, pixel);
+            Some((at, lighting)) => {
+                let Some(object) = self.scene.objects.get(at.object) else { return to_rgb(self.mode.background(), self.scene) };
+                let local = self.mode.local(&object.material, lighting, pixel);
                 #[cfg(feature = "ray-tree")]
                 if self.scene.has_ray_tree() {
                     let context = super::ray_tree::TreeContext { scene: self.scene, colours: self.mode, pixel, culling: self.culling };
