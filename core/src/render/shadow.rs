@@ -107,6 +107,7 @@ pub fn in_shadow_culled<N: Number, const MAX_OBJECTS: usize>(
 /// blocks the shadow ray, zero when an opaque object does, else the product of the
 /// transparent blockers' `transmit` (shadow rays are not refracted, as the thesis says). In
 /// a scene without transparent objects, [`in_shadow_culled`]'s yes or no.
+#[inline(always)]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn light_share<N: Number, const MAX_OBJECTS: usize>(
     scene: &Scene<N, MAX_OBJECTS>,
@@ -166,6 +167,7 @@ fn transmitted<N: Number, const MAX_OBJECTS: usize>(
 
 /// Whether anything blocks the shadow ray (the thesis's `inshadow`), with the culling and
 /// `last_blocker` (the light's shadow cache, tried first and updated).
+#[inline(always)]
 #[allow(clippy::too_many_arguments)]
 fn blocked<N: Number, const MAX_OBJECTS: usize>(
     scene: &Scene<N, MAX_OBJECTS>,
