@@ -43,6 +43,7 @@ impl<N: Number> AffineTransform<N> {
     }
 
     /// `transformvector`: `v · linear`.
+    #[inline]
     pub fn vector(&self, v: Vector3<N>) -> Vector3<N> {
         let v = [v.x, v.y, v.z];
         let c = &self.columns;
@@ -50,6 +51,7 @@ impl<N: Number> AffineTransform<N> {
     }
 
     /// `transformpoint`: `p · linear + translation`.
+    #[inline]
     pub fn point(&self, p: Vector3<N>) -> Vector3<N> {
         let t = &self.translation;
         self.vector(p) + Vector3::new(t[0], t[1], t[2])
@@ -57,12 +59,14 @@ impl<N: Number> AffineTransform<N> {
 
     /// The ray in this transform's target space. The direction is not renormalised, so `t`
     /// means the same in both spaces (§4.4).
+    #[inline]
     pub fn ray(&self, ray: &Ray<N>) -> Ray<N> {
         Ray { origin: self.point(ray.origin), direction: self.vector(ray.direction) }
     }
 
     /// `linear · v` (a column vector): with `self` = object_from_world this takes an object
     /// normal to world space through the inverse transpose of world_from_object.
+    #[inline]
     pub fn transposed_vector(&self, v: Vector3<N>) -> Vector3<N> {
         let c = &self.columns;
         let row = |r: usize| N::dot3([c[0][r], c[1][r], c[2][r]], [v.x, v.y, v.z]);

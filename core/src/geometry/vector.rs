@@ -45,6 +45,9 @@ impl<N: Number> Vector3<N> {
     /// point that would change nothing): it keeps a short vector (the world normal
     /// of a large object has components of about one over its size) from losing the
     /// significant bits of its squares (a Q32.32 normal was 8·10⁻⁴ too long at size 4000).
+    // Inline: out of line, its `Option<Vector3>` went back through memory at each of the
+    // four calls a hit pixel makes (137 k instructions of a 2.93 M Cortex-M4F frame).
+    #[inline]
     pub fn normalized(self) -> Option<Self> {
         let scaled = if N::FLOATING_POINT { self } else { self.times_power_of_two(-self.largest_component().binary_exponent()?) };
         let reciprocal = N::ONE.checked_div(scaled.length())?;

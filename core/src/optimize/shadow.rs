@@ -321,7 +321,9 @@ const QUANTIZED_EXPONENT: i32 = 14;
 
 impl QuantizedDirection {
     /// Each component's floor. If ⌊d·2¹⁴⌋ < ⌊low·2¹⁴⌋ then d < low; saturation only moves a
-    /// bound beyond every unit direction.
+    /// bound beyond every unit direction. Inline: the scaling by a constant power of two then
+    /// folds into one multiplication.
+    #[inline(always)]
     pub fn floor<N: Number>(v: Vector3<N>) -> Self {
         let step = |x: N| x.times_power_of_two(QUANTIZED_EXPONENT).floor_to_i32().clamp(i32::from(i16::MIN), i32::from(i16::MAX)) as i16;
         Self([step(v.x), step(v.y), step(v.z)])

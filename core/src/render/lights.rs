@@ -26,17 +26,13 @@ pub(crate) fn direct_lighting<N: Number, const MAX_OBJECTS: usize>(
     cache: &mut ShadowCache,
     culling: &[ShadowCulling<'_, N>],
 ) -> Lighting<N> {
-    let none = ShadowCulling::default();
     let at = Hit { scene, object, point, normal, view, power };
-    let mut total = at.one_light(scene.light, statistics, &mut cache.last_blocker, culling.first().unwrap_or(&none));
-    if scene.light_intensity != N::ONE {
-        total = scaled(total, scene.light_intensity);
+    let first = at.one_light(scene.light, statistics, &mut cache.last_blocker, culling.first().unwrap_or(&ShadowCulling::NONE));
+    // The thesis's case, one light of intensity one: its term as it is.
+    if scene.more_lights.is_empty() && scene.light_intensity == N::ONE {
+        return first;
     }
-    for ((source, last_blocker), index) in scene.more_lights.iter().zip(cache.more_blockers.iter_mut()).zip(1..) {
-        let term = scaled(at.one_light(source.light, statistics, last_blocker, culling.get(index).unwrap_or(&none)), source.intensity);
-        total = Lighting { diffuse: total.diffuse + term.diffuse, specular: total.specular + term.specular };
-    }
-    total
+    at.with_more_lights(first, statistics, cache, culling)
 }
 
 fn scaled<N: Number>(lighting: Lighting<N>, factor: N) -> Lighting<N> {
@@ -54,6 +50,19 @@ struct Hit<'a, N, const MAX_OBJECTS: usize> {
 }
 
 impl<N: Number, const MAX_OBJECTS: usize> Hit<'_, N, MAX_OBJECTS> {
+    /// The first light's term scaled by its intensity plus the further lights' terms: out of
+    /// line, so that a one-light scene's pixels carry none of it.
+    #[inline(never)]
+    fn with_more_lights(&self, first: Lighting<N>, statistics: &mut Statistics, cache: &mut ShadowCache, culling: &[ShadowCulling<'_, N>]) -> Lighting<N> {
+        let scene = self.scene;
+        let mut total = if scene.light_intensity != N::ONE { scaled(first, scene.light_intensity) } else { first };
+        for ((source, last_blocker), index) in scene.more_lights.iter().zip(cache.more_blockers.iter_mut()).zip(1..) {
+            let term = scaled(self.one_light(source.light, statistics, last_blocker, culling.get(index).unwrap_or(&ShadowCulling::NONE)), source.intensity);
+            total = Lighting { diffuse: total.diffuse + term.diffuse, specular: total.specular + term.specular };
+        }
+        total
+    }
+
     /// One light's diffuse and specular at the hit, times the share that reaches it.
     fn one_light(&self, light: PreparedLight<N>, statistics: &mut Statistics, last_blocker: &mut Option<u16>, culling: &ShadowCulling<'_, N>) -> Lighting<N> {
         let (to_light, light_distance) = match light {

@@ -81,9 +81,14 @@ pub struct ShadowCulling<'a, N> {
     pub blockers: &'a [BlockerSet],
 }
 
+impl<N> ShadowCulling<'_, N> {
+    /// No culling: every object is a candidate.
+    pub const NONE: Self = Self { light_cones: &[], blockers: &[] };
+}
+
 impl<N> Default for ShadowCulling<'_, N> {
     fn default() -> Self {
-        Self { light_cones: &[], blockers: &[] }
+        Self::NONE
     }
 }
 
