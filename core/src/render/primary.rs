@@ -26,7 +26,7 @@ pub struct NearestHit<N> {
 /// The primary ray `ray` in the object's space: for a perspective view from the eye in object
 /// space prepared with the scene (the same bits as `object_from_world.ray(ray)`, one transform
 /// fewer per test).
-#[inline]
+#[inline(always)]
 fn local_ray<N: Number>(object: &Object<N>, ray: &Ray<N>, from_eye: bool) -> Ray<N> {
     if from_eye {
         Ray { origin: object.eye, direction: object.object_from_world.vector(ray.direction) }

@@ -20,6 +20,7 @@ fn side_normal<N: Number>(hit: Vector3<N>) -> Vector3<N> {
 /// diag(−1, −1, 1) here, so Δ = wₓ² + w_y² − w_z². For a thin or distant cone b² and a c are
 /// huge and nearly equal (a cone 10⁻⁴ thick lost 1 % of its pixels in f32); the cross
 /// product cancels only second-order terms, each formed exactly by `dot3` in fixed point.
+#[inline]
 fn discriminant<N: Number>(p: Vector3<N>, d: Vector3<N>) -> N {
     let zero = N::ZERO;
     let w = [
@@ -30,6 +31,7 @@ fn discriminant<N: Number>(p: Vector3<N>, d: Vector3<N>) -> N {
     N::dot3(w, [w[0], w[1], -w[2]])
 }
 
+#[inline]
 fn surfaces<N: Number>(ray: &Ray<N>) -> [Option<(N, Vector3<N>)>; 3] {
     let (p, d) = (ray.origin, ray.direction);
     let mut found = [None; 3];

@@ -9,6 +9,7 @@ use crate::number::Number;
 type Crossing<N> = (N, Vector3<N>);
 
 /// Entry and exit parameters and the outward normals there, or `None` for a miss.
+#[inline]
 fn span<N: Number>(ray: &Ray<N>) -> Option<(Crossing<N>, Crossing<N>)> {
     let (p, d) = (ray.origin.to_array(), ray.direction.to_array());
     let mut enter = (-N::MAX, Vector3::zero());

@@ -6,6 +6,7 @@ use crate::number::Number;
 
 /// Every surface the ray meets, as (t, normal), in no particular order; `None` entries are
 /// misses.
+#[inline]
 fn surfaces<N: Number>(ray: &Ray<N>) -> [Option<(N, Vector3<N>)>; 4] {
     let (p, d) = (ray.origin, ray.direction);
     let mut found = [None; 4];

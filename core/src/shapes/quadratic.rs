@@ -6,6 +6,7 @@ use crate::number::Number;
 
 /// Both roots, nearer first, given the discriminant `Δ = b² − A c` (already known to be ≥ 0).
 /// A root that cannot be formed (zero divisor) is `None`.
+#[inline]
 pub fn roots<N: Number>(a: N, b: N, c: N, discriminant: N) -> [Option<N>; 2] {
     let root_of_discriminant = discriminant.sqrt();
     let q = if b < N::ZERO { -b + root_of_discriminant } else { -b - root_of_discriminant };
@@ -21,6 +22,7 @@ pub fn roots<N: Number>(a: N, b: N, c: N, discriminant: N) -> [Option<N>; 2] {
 /// distance from the centre to the ray's line subtracted from the radius, which keeps its
 /// precision for far, small objects where `b² − A c` cancels (precision notes).
 /// `p` and `d` are the components that take part (3 for the sphere, x and y for the cylinder).
+#[inline]
 pub fn unit_discriminant<N: Number>(p: [N; 3], d: [N; 3], a: N, b: N) -> Option<N> {
     let along = b.checked_div(a)?;
     let perpendicular = [p[0] - d[0] * along, p[1] - d[1] * along, p[2] - d[2] * along];
