@@ -112,6 +112,7 @@ impl<N: Number> Camera<N> {
 
     /// The primary ray through a pixel, with a unit direction; `None` when a perspective eye
     /// lies exactly on the pixel's sample point.
+    #[inline]
     pub fn primary_ray(&self, pixel: PixelPosition) -> Option<Ray<N>> {
         let point = self.view_plane_point(pixel);
         match self.origin {

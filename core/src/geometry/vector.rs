@@ -28,14 +28,17 @@ impl<N: Number> Vector3<N> {
         [self.x.to_f64(), self.y.to_f64(), self.z.to_f64()]
     }
 
+    #[inline]
     pub fn to_array(self) -> [N; 3] {
         [self.x, self.y, self.z]
     }
 
+    #[inline]
     pub fn dot(self, other: Self) -> N {
         N::dot3(self.to_array(), other.to_array())
     }
 
+    #[inline]
     pub fn length(self) -> N {
         N::length3(self.to_array())
     }
@@ -75,6 +78,7 @@ impl<N: Number> Vector3<N> {
 
 impl<N: Number> Add for Vector3<N> {
     type Output = Self;
+    #[inline]
     fn add(self, other: Self) -> Self {
         Self::new(self.x + other.x, self.y + other.y, self.z + other.z)
     }
@@ -82,6 +86,7 @@ impl<N: Number> Add for Vector3<N> {
 
 impl<N: Number> Sub for Vector3<N> {
     type Output = Self;
+    #[inline]
     fn sub(self, other: Self) -> Self {
         Self::new(self.x - other.x, self.y - other.y, self.z - other.z)
     }
@@ -89,6 +94,7 @@ impl<N: Number> Sub for Vector3<N> {
 
 impl<N: Number> Neg for Vector3<N> {
     type Output = Self;
+    #[inline]
     fn neg(self) -> Self {
         Self::new(-self.x, -self.y, -self.z)
     }
@@ -96,6 +102,7 @@ impl<N: Number> Neg for Vector3<N> {
 
 impl<N: Number> Mul<N> for Vector3<N> {
     type Output = Self;
+    #[inline]
     fn mul(self, scale: N) -> Self {
         Self::new(self.x * scale, self.y * scale, self.z * scale)
     }

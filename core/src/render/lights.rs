@@ -15,6 +15,7 @@ use crate::shading::{lighting, Lighting};
 /// The lighting at `point` on object `object` with the unit `normal` facing the incoming ray
 /// `view`; `start` is where shadow rays leave (the point moved off the surface).
 #[allow(clippy::too_many_arguments)]
+#[inline(always)]
 pub(crate) fn direct_lighting<N: Number, const MAX_OBJECTS: usize>(
     scene: &Scene<N, MAX_OBJECTS>,
     object: usize,

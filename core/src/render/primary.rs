@@ -48,7 +48,8 @@ pub fn nearest_hit<N: Number, const MAX_OBJECTS: usize>(
 /// [`nearest_hit`], first testing `last_hit` (the object the previous ray hit, updated here)
 /// when the acceleration uses the hit cache. Which objects are tested first cannot change the
 /// result: ties go by object number, and Sortlist's exit only skips objects whose bound lies
-/// beyond the nearest hit.
+/// beyond the nearest hit. Always inline: out of line, its hit returns through memory.
+#[inline(always)]
 pub fn nearest_hit_cached<N: Number, const MAX_OBJECTS: usize>(
     scene: &Scene<N, MAX_OBJECTS>,
     ray: &Ray<N>,

@@ -38,6 +38,7 @@ pub(crate) struct SurfacePoint<N> {
 impl<N: Number> SurfacePoint<N> {
     /// The hit at `t` along `ray` on `object`, whose world-space normal (not normalised) is
     /// `world_normal`: the normal turned to face the ray (the thesis's rule for inner sides).
+    #[inline(always)]
     pub fn new(world_normal: Vector3<N>, ray: &Ray<N>, t: N, object: usize) -> Self {
         let mut normal = world_normal.normalized().unwrap_or(-ray.direction);
         let entering = normal.dot(ray.direction) <= N::ZERO;
