@@ -67,6 +67,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
                 self.spheres.push(*sphere).map_err(|_| too_many(MAX_OBJECTS))?;
             }
             self.space_grid.build(&self.spheres);
+            self.transparent = self.optics.iter().any(|optics| optics.transmit > N::ZERO);
         }
         self.constants = parts.constants;
         self.background = parts.background;

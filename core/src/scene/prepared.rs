@@ -125,6 +125,10 @@ pub struct Scene<N, const MAX_OBJECTS: usize> {
     /// object reflects or transmits; and the tree's depth (1: primary rays only).
     #[cfg(feature = "ray-tree")]
     pub optics: Vec<Optics<N>, MAX_OBJECTS>,
+    /// Whether some object's `transmit` is above zero: found once at preparation, asked by
+    /// every shadow ray ([`Scene::has_transparent_objects`]).
+    #[cfg(feature = "ray-tree")]
+    pub transparent: bool,
     /// The objects' world-space spheres for secondary rays, filled with `optics`.
     #[cfg(feature = "ray-tree")]
     pub spheres: Vec<BoundingSphere<N>, MAX_OBJECTS>,
@@ -171,6 +175,8 @@ impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
         more_lights: Vec::new(),
         #[cfg(feature = "ray-tree")]
         optics: Vec::new(),
+        #[cfg(feature = "ray-tree")]
+        transparent: false,
         #[cfg(feature = "ray-tree")]
         spheres: Vec::new(),
         #[cfg(feature = "ray-tree")]
@@ -267,7 +273,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
     /// Whether some object lets light through (so shadow rays measure a share, not a yes/no).
     #[cfg(feature = "ray-tree")]
     pub fn has_transparent_objects(&self) -> bool {
-        self.optics.iter().any(|optics| optics.transmit > N::ZERO)
+        self.transparent
     }
 
     /// The object's optics (none: a plain thesis surface).
@@ -353,7 +359,10 @@ impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
         }
         self.acceleration.rebuild(&self.camera, description.optimizations, descriptions, Tuning::IMPROVED);
         #[cfg(feature = "ray-tree")]
-        self.space_grid.build(&self.spheres);
+        {
+            self.space_grid.build(&self.spheres);
+            self.transparent = self.optics.iter().any(|optics| optics.transmit > N::ZERO);
+        }
         Ok(())
     }
 
