@@ -156,7 +156,7 @@ fn transmitted<N: Number, const MAX_OBJECTS: usize>(
         }
         let meets = if culls {
             let listed = set.is_none_or(|set| index >= BlockerSet::CAPACITY || set.contains(index));
-            listed && !culling.light_cones.get(index).is_some_and(|chord| chord.outside_box(quantized) || chord.excludes(from_light)) && segment.may_meet_and_meets(scene, index, statistics)
+            listed && candidate_meets(scene, &segment, culling.light_cones, (from_light, quantized), index, statistics)
         } else {
             segment.meets(scene, index, statistics)
         };
@@ -196,27 +196,12 @@ fn blocked<N: Number, const MAX_OBJECTS: usize>(
     // at the first candidate that needs it measured slower: the state kept the candidate
     // test out of line.
     let quantized = if cones.is_empty() { QuantizedDirection::default() } else { QuantizedDirection::floor(from_light) };
-    // The chord test is a few multiplications and rejects almost every candidate: forced
-    // inline at each of the three sites below. The capsule test and the primitive's are out
-    // of line.
-    #[inline(always)]
-    fn blocks<N: Number, const MAX_OBJECTS: usize>(
-        scene: &Scene<N, MAX_OBJECTS>,
-        segment: &ShadowSegment<N>,
-        cones: &[DirectionChord<N>],
-        (from_light, quantized): (Vector3<N>, QuantizedDirection),
-        index: usize,
-        statistics: &mut Statistics,
-    ) -> bool {
-        // The box (integer comparisons) rejects most directions before any arithmetic in N.
-        !cones.get(index).is_some_and(|chord| chord.outside_box(quantized) || chord.excludes(from_light)) && segment.may_meet_and_meets(scene, index, statistics)
-    }
     let set = culling.blockers.get(shaded_object).copied();
     let listed = |index: usize| set.is_none_or(|set| index >= BlockerSet::CAPACITY || set.contains(index));
     // The last blocker first (never the shaded object: it cannot block its own ray).
     let first = last_blocker.map(usize::from).filter(|index| *index != shaded_object && listed(*index));
     if let Some(index) = first {
-        if blocks(scene, &segment, cones, (from_light, quantized), index, statistics) {
+        if candidate_meets(scene, &segment, cones, (from_light, quantized), index, statistics) {
             return true;
         }
     }
@@ -227,7 +212,7 @@ fn blocked<N: Number, const MAX_OBJECTS: usize>(
             while remaining != 0 {
                 let index = 32 * word_index + remaining.trailing_zeros() as usize;
                 remaining &= remaining - 1;
-                if !skip(index) && blocks(scene, &segment, cones, (from_light, quantized), index, statistics) {
+                if !skip(index) && candidate_meets(scene, &segment, cones, (from_light, quantized), index, statistics) {
                     *last_blocker = Some(index as u16);
                     return true;
                 }
@@ -236,12 +221,28 @@ fn blocked<N: Number, const MAX_OBJECTS: usize>(
     }
     let start = if set.is_some() { BlockerSet::CAPACITY } else { 0 };
     for index in start..scene.objects.len() {
-        if !skip(index) && blocks(scene, &segment, cones, (from_light, quantized), index, statistics) {
+        if !skip(index) && candidate_meets(scene, &segment, cones, (from_light, quantized), index, statistics) {
             *last_blocker = Some(index as u16);
             return true;
         }
     }
     false
+}
+
+/// Whether a candidate blocks the shadow ray: its chord of directions from the light (a box in
+/// integers first, which rejects most), then its capsule and primitive. The chord test is a few
+/// multiplications and rejects almost every candidate: forced inline at each site. The capsule
+/// test and the primitive's are out of line.
+#[inline(always)]
+fn candidate_meets<N: Number, const MAX_OBJECTS: usize>(
+    scene: &Scene<N, MAX_OBJECTS>,
+    segment: &ShadowSegment<N>,
+    cones: &[DirectionChord<N>],
+    (from_light, quantized): (Vector3<N>, QuantizedDirection),
+    index: usize,
+    statistics: &mut Statistics,
+) -> bool {
+    !cones.get(index).is_some_and(|chord| chord.outside_box(quantized) || chord.excludes(from_light)) && segment.may_meet_and_meets(scene, index, statistics)
 }
 
 /// A shadow ray's segment: from the (offset) hit point toward the light, up to its distance.
