@@ -22,7 +22,7 @@ use heapless::Vec;
 
 use super::progressive::RowCoverage;
 use super::shadow::{ShadowCache, ShadowCulling};
-use super::trace::{primary_surface, Mode};
+use super::trace::{primary_surface_then, Mode};
 use super::Statistics;
 use crate::number::Number;
 use crate::pixel::PixelSink;
@@ -60,23 +60,22 @@ struct Sampler<'a, 'c, N, M, const MAX_OBJECTS: usize, const DEPTH: usize> {
 impl<N: Number, M: Mode<N>, const MAX_OBJECTS: usize, const DEPTH: usize> Sampler<'_, '_, N, M, MAX_OBJECTS, DEPTH> {
     fn sample(&self, x: u16, y: u16, statistics: &mut Statistics, cache: &mut ShadowCache) -> Rgb {
         let pixel = self.scene.camera.pixel(x, y);
-        let colour = match primary_surface(self.scene, pixel, statistics, cache, self.culling) {
-            None => self.mode.background(),
-            Some((at, lighting)) => {
-                let Some(object) = self.scene.objects.get(at.object) else { return to_rgb(self.mode.background(), self.scene) };
-                let local = self.mode.local(&object.material, lighting, pixel);
-                #[cfg(feature = "ray-tree")]
-                if self.scene.has_ray_tree() {
-                    let context = super::ray_tree::TreeContext { scene: self.scene, colours: self.mode, pixel, culling: self.culling };
-                    if let Some(mixed) = super::ray_tree::trace_tree::<N, M, MAX_OBJECTS, DEPTH>(&context, at, local, statistics, cache) {
-                        return to_rgb(mixed, self.scene);
-                    }
+        let surface = primary_surface_then(self.scene, pixel, statistics, cache, self.culling, |at, lighting, statistics, cache| {
+            let object = self.scene.objects.get(at.object)?;
+            let local = self.mode.local(&object.material, lighting, pixel);
+            #[cfg(feature = "ray-tree")]
+            if self.scene.has_ray_tree() {
+                let context = super::ray_tree::TreeContext { scene: self.scene, colours: self.mode, pixel, culling: self.culling };
+                if let Some(mixed) = super::ray_tree::trace_tree::<N, M, MAX_OBJECTS, DEPTH>(&context, *at, local, statistics, cache) {
+                    return Some(mixed);
                 }
-                let _ = at;
-                local
             }
-        };
-        to_rgb(colour, self.scene)
+            #[cfg(not(feature = "ray-tree"))]
+            let _ = (statistics, cache);
+            Some(local)
+        });
+        // No hit, or (never) a hit on an object the scene lacks: the background.
+        to_rgb(surface.flatten().unwrap_or_else(|| self.mode.background()), self.scene)
     }
 }
 
