@@ -184,14 +184,45 @@ pub(crate) struct RowCoverage<const MAX_OBJECTS: usize> {
 }
 
 impl<const MAX_OBJECTS: usize> RowCoverage<MAX_OBJECTS> {
+    /// No span yet: covers nothing.
+    pub(crate) const fn empty() -> Self {
+        Self { spans: [(0, 0); MAX_OBJECTS], count: 0, overflowed: false }
+    }
+
     pub(crate) fn of<N: Number>(scene: &Scene<N, MAX_OBJECTS>, row: u16) -> Self {
-        let mut coverage = Self { spans: [(0, 0); MAX_OBJECTS], count: 0, overflowed: false };
+        let mut coverage = Self::empty();
         fill_volumes_rows(scene, &mut coverage, true, false, row..row.saturating_add(1));
         coverage
     }
 
     pub(crate) fn covers(&self, column: u16) -> bool {
         self.overflowed || self.spans.iter().take(self.count).any(|&(first, width)| column >= first && column - first < width)
+    }
+
+    /// The run of pixels from `column` that are all covered or all not: whether they are, and
+    /// the column after the run's last (at most `width`). A covered run goes on through every
+    /// span that overlaps or touches it; an uncovered one ends where the next span starts. Work
+    /// per run, not per pixel (the streamed render, `super::streamed`).
+    pub(crate) fn run_from(&self, column: u16, width: u16) -> (bool, u16) {
+        if self.overflowed {
+            return (true, width);
+        }
+        let spans = self.spans.get(..self.count).unwrap_or(&[]);
+        let end_of = |&(first, span_width): &(u16, u16)| first.saturating_add(span_width);
+        if self.covers(column) {
+            let mut end = column;
+            // Each step ends past a span containing `end`, so `end` grows until none does.
+            while let Some(next) = spans.iter().filter(|span| span.0 <= end && end < end_of(span)).map(end_of).max() {
+                end = next;
+                if end >= width {
+                    break;
+                }
+            }
+            (true, end.min(width))
+        } else {
+            let next = spans.iter().map(|span| span.0).filter(|&first| first > column).min().unwrap_or(width);
+            (false, next.min(width))
+        }
     }
 }
 

@@ -1,0 +1,113 @@
+//! The render for a sink that cannot be read back: rows top first, each row's pixels written
+//! once, left to right, and `row_done` after each row, so the sink can send the row on (to a
+//! display's own RAM, to a host) and forget it. No framebuffer is needed.
+//!
+//! Pixelbuffer's fill (§4.7.2) is the same as [`super::render_pga`]'s ([`super::fill_volumes_rows`]),
+//! recorded one row at a time as spans on the stack (`RowCoverage`, as the progressive render
+//! does) instead of marked in the sink and read back (`PixelSource::read_row`): a pixel outside
+//! every object's fill is the background with no ray, a pixel inside is traced. The pixels are
+//! traced in the same order with the same caches, so the image and every statistic equal
+//! [`super::render_pga`]'s and [`super::render_pga_sized`]'s (the tests check it: both thesis
+//! scenes, every combination of the optimizations, several number types, antialiasing and the
+//! ray tree).
+//!
+//! What the sink sees: for each row, runs of the background (`fill_row`, one per run of pixels
+//! outside the fill) and traced pixels (`set_pixel`), covering the row exactly once, then
+//! `row_done`. Never `mark_row`. An antialiased scene goes through the same antialiased render as
+//! [`super::render_pga`] (it needs no read-back either: one row of corners on the stack).
+//!
+//! Memory: the row's coverage, 4 bytes an object plus a few, on the stack while the row is
+//! traced.
+
+use super::antialias::render_antialiased;
+use super::progressive::RowCoverage;
+use super::shadow::ShadowCache;
+use super::trace::{pixel_value, with_shadow_culling, Mode, PgaNodes, RgbNodes, ANTIALIAS_ROW};
+use super::Statistics;
+use crate::number::Number;
+use crate::pixel::{PixelSink, Rgb888};
+use crate::scene::{Scene, MAX_DEPTH};
+
+/// [`super::render_pga`] into a sink that is never read: each row written once and then done.
+pub fn render_pga_streamed<N, S, const MAX_OBJECTS: usize>(scene: &Scene<N, MAX_OBJECTS>, sink: &mut S, statistics: &mut Statistics)
+where
+    N: Number,
+    S: PixelSink<u8>,
+{
+    render_pga_streamed_sized::<N, S, MAX_OBJECTS, { MAX_DEPTH as usize }, ANTIALIAS_ROW>(scene, sink, statistics);
+}
+
+/// [`super::render_pga_sized`] into a sink that is never read: its stack sized for the scene
+/// (a ray tree at most `DEPTH` generations deep, a row of `ROW` antialiasing corners).
+pub fn render_pga_streamed_sized<N, S, const MAX_OBJECTS: usize, const DEPTH: usize, const ROW: usize>(scene: &Scene<N, MAX_OBJECTS>, sink: &mut S, statistics: &mut Statistics)
+where
+    N: Number,
+    S: PixelSink<u8>,
+{
+    streamed::<N, u8, S, _, MAX_OBJECTS, DEPTH, ROW>(scene, sink, statistics, scene.background, &PgaNodes { scene });
+}
+
+/// [`super::render_rgb`] into a sink that is never read.
+pub fn render_rgb_streamed<N, S, const MAX_OBJECTS: usize>(scene: &Scene<N, MAX_OBJECTS>, sink: &mut S, statistics: &mut Statistics)
+where
+    N: Number,
+    S: PixelSink<Rgb888>,
+{
+    streamed::<N, Rgb888, S, _, MAX_OBJECTS, { MAX_DEPTH as usize }, ANTIALIAS_ROW>(scene, sink, statistics, scene.background_rgb(), &RgbNodes { scene });
+}
+
+fn streamed<N, P, S, M, const MAX_OBJECTS: usize, const DEPTH: usize, const ROW: usize>(
+    scene: &Scene<N, MAX_OBJECTS>,
+    sink: &mut S,
+    statistics: &mut Statistics,
+    background: P,
+    mode: &M,
+) where
+    N: Number,
+    P: Copy,
+    S: PixelSink<P>,
+    M: Mode<N, Pixel = P>,
+{
+    let camera = &scene.camera;
+    let (width, height) = (camera.width(), camera.height());
+    if let Some(antialias) = scene.antialias {
+        return with_shadow_culling(scene, |culling| {
+            render_antialiased::<N, P, S, M, MAX_OBJECTS, DEPTH, ROW>(scene, antialias, sink, statistics, 0..height, mode, culling)
+        });
+    }
+    let pixelbuffer = scene.optimizations.pixelbuffer;
+    let mut cache = ShadowCache::default();
+    with_shadow_culling(scene, |culling| {
+        let mut trace = |column: u16, row: u16, statistics: &mut Statistics, sink: &mut S| {
+            let pixel = camera.pixel(column, row);
+            let value = pixel_value::<N, M, MAX_OBJECTS, DEPTH>(scene, mode, pixel, statistics, &mut cache, culling).unwrap_or(background);
+            sink.set_pixel(column, row, value);
+        };
+        for row in 0..height {
+            statistics.pixels += u64::from(width);
+            if pixelbuffer {
+                let coverage = RowCoverage::<MAX_OBJECTS>::of(scene, row);
+                let mut column = 0;
+                while column < width {
+                    let (covered, end) = coverage.run_from(column, width);
+                    if covered {
+                        for column in column..end {
+                            trace(column, row, statistics, sink);
+                        }
+                    } else {
+                        sink.fill_row(column, row, end - column, background);
+                    }
+                    column = end;
+                }
+            } else {
+                for column in 0..width {
+                    trace(column, row, statistics, sink);
+                }
+            }
+            sink.row_done(row);
+        }
+    })
+}
+
+#[cfg(test)]
+mod tests;
