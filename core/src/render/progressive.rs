@@ -199,30 +199,32 @@ impl<const MAX_OBJECTS: usize> RowCoverage<MAX_OBJECTS> {
         self.overflowed || self.spans.iter().take(self.count).any(|&(first, width)| column >= first && column - first < width)
     }
 
-    /// The run of pixels from `column` that are all covered or all not: whether they are, and
-    /// the column after the run's last (at most `width`). A covered run goes on through every
-    /// span that overlaps or touches it; an uncovered one ends where the next span starts. Work
-    /// per run, not per pixel (the streamed render, `super::streamed`).
-    pub(crate) fn run_from(&self, column: u16, width: u16) -> (bool, u16) {
+    /// The spans sorted by their first column (an insertion sort: a row has a few), or `None`
+    /// when there were more than the coverage holds and the whole row counts as covered. For the
+    /// streamed render (`super::streamed`), which walks them once a row instead of testing each
+    /// pixel against every span.
+    pub(crate) fn sorted_spans(&mut self) -> Option<&[(u16, u16)]> {
         if self.overflowed {
-            return (true, width);
+            return None;
         }
-        let spans = self.spans.get(..self.count).unwrap_or(&[]);
-        let end_of = |&(first, span_width): &(u16, u16)| first.saturating_add(span_width);
-        if self.covers(column) {
-            let mut end = column;
-            // Each step ends past a span containing `end`, so `end` grows until none does.
-            while let Some(next) = spans.iter().filter(|span| span.0 <= end && end < end_of(span)).map(end_of).max() {
-                end = next;
-                if end >= width {
+        let spans = self.spans.get_mut(..self.count)?;
+        for next in 1..spans.len() {
+            let Some(&moving) = spans.get(next) else { break };
+            let mut slot = next;
+            while let Some(&before) = slot.checked_sub(1).and_then(|previous| spans.get(previous)) {
+                if before.0 <= moving.0 {
                     break;
                 }
+                if let Some(place) = spans.get_mut(slot) {
+                    *place = before;
+                }
+                slot -= 1;
             }
-            (true, end.min(width))
-        } else {
-            let next = spans.iter().map(|span| span.0).filter(|&first| first > column).min().unwrap_or(width);
-            (false, next.min(width))
+            if let Some(place) = spans.get_mut(slot) {
+                *place = moving;
+            }
         }
+        Some(spans)
     }
 }
 

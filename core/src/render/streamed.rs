@@ -86,19 +86,16 @@ fn streamed<N, P, S, M, const MAX_OBJECTS: usize, const DEPTH: usize, const ROW:
         for row in 0..height {
             statistics.pixels += u64::from(width);
             if pixelbuffer {
-                let coverage = RowCoverage::<MAX_OBJECTS>::of(scene, row);
-                let mut column = 0;
-                while column < width {
-                    let (covered, end) = coverage.run_from(column, width);
+                let mut coverage = RowCoverage::<MAX_OBJECTS>::of(scene, row);
+                runs(coverage.sorted_spans(), width, |covered, from, to| {
                     if covered {
-                        for column in column..end {
+                        for column in from..to {
                             trace(column, row, statistics, sink);
                         }
                     } else {
-                        sink.fill_row(column, row, end - column, background);
+                        sink.fill_row(from, row, to - from, background);
                     }
-                    column = end;
-                }
+                });
             } else {
                 for column in 0..width {
                     trace(column, row, statistics, sink);
@@ -107,6 +104,49 @@ fn streamed<N, P, S, M, const MAX_OBJECTS: usize, const DEPTH: usize, const ROW:
             sink.row_done(row);
         }
     })
+}
+
+/// Splits the columns `0..width` into the runs the fill covers and the runs it does not, in
+/// order, calling `run(covered, first, end)` for each (`end` exclusive; runs never empty,
+/// neighbours never alike): the spans (sorted by their first column) merged where they overlap
+/// or touch, and the gaps between them. `None`: the whole row is covered.
+fn runs(spans: Option<&[(u16, u16)]>, width: u16, mut run: impl FnMut(bool, u16, u16)) {
+    let Some(spans) = spans else {
+        if width > 0 {
+            run(true, 0, width);
+        }
+        return;
+    };
+    // The columns before `column` are done; `pending` is the covered run being merged.
+    let mut column = 0;
+    let mut pending: Option<(u16, u16)> = None;
+    let mut finish = |(first, end): (u16, u16), column: &mut u16| {
+        if first > *column {
+            run(false, *column, first);
+        }
+        run(true, first, end);
+        *column = end;
+    };
+    for &(first, span_width) in spans {
+        let (start, end) = (first.min(width), first.saturating_add(span_width).min(width));
+        if start >= end {
+            continue;
+        }
+        pending = match pending {
+            Some((from, to)) if start <= to => Some((from, to.max(end))),
+            Some(done) => {
+                finish(done, &mut column);
+                Some((start, end))
+            }
+            None => Some((start, end)),
+        };
+    }
+    if let Some(done) = pending {
+        finish(done, &mut column);
+    }
+    if column < width {
+        run(false, column, width);
+    }
 }
 
 #[cfg(test)]

@@ -198,20 +198,26 @@ fn rgb_streamed_equals_the_framebuffer_render() {
 }
 
 #[test]
-fn a_coverage_run_goes_through_overlapping_and_touching_spans() {
+fn the_runs_merge_overlapping_and_touching_spans_and_fill_the_gaps() {
     let mut coverage = RowCoverage::<4>::empty();
-    // Spans 10..20, 15..25, 25..30 (touching), 40..41.
+    // Spans 10..20, 15..25, 25..30 (touching), 40..41, marked out of order.
     for (first, width) in [(15, 10), (10, 10), (40, 1), (25, 5)] {
         coverage.mark_row(first, 0, width, true);
     }
-    assert_eq!(coverage.run_from(0, 128), (false, 10));
-    assert_eq!(coverage.run_from(10, 128), (true, 30));
-    assert_eq!(coverage.run_from(12, 128), (true, 30));
-    assert_eq!(coverage.run_from(30, 128), (false, 40));
-    assert_eq!(coverage.run_from(40, 128), (true, 41));
-    assert_eq!(coverage.run_from(41, 128), (false, 128));
-    assert_eq!(coverage.run_from(12, 20), (true, 20));
+    let collect = |spans: Option<&[(u16, u16)]>, width: u16| {
+        let mut seen = Vec::new();
+        runs(spans, width, |covered, first, end| seen.push((covered, first, end)));
+        seen
+    };
+    let spans = coverage.sorted_spans().map(<[_]>::to_vec);
+    assert_eq!(spans.as_deref(), Some(&[(10, 10), (15, 10), (25, 5), (40, 1)][..]));
+    assert_eq!(collect(spans.as_deref(), 128), [(false, 0, 10), (true, 10, 30), (false, 30, 40), (true, 40, 41), (false, 41, 128)]);
+    // Clipped to the row; a span from column 0; a span past the row's end.
+    assert_eq!(collect(spans.as_deref(), 20), [(false, 0, 10), (true, 10, 20)]);
+    assert_eq!(collect(Some(&[(0, 5), (3, 4), (200, 3)]), 10), [(true, 0, 7), (false, 7, 10)]);
+    assert_eq!(collect(Some(&[]), 10), [(false, 0, 10)]);
+    assert_eq!(collect(None, 10), [(true, 0, 10)]);
     // A fifth span does not fit: the whole row counts as covered.
     coverage.mark_row(100, 0, 1, true);
-    assert_eq!(coverage.run_from(0, 128), (true, 128));
+    assert_eq!(coverage.sorted_spans(), None);
 }
