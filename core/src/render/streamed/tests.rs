@@ -221,3 +221,23 @@ fn the_runs_merge_overlapping_and_touching_spans_and_fill_the_gaps() {
     coverage.mark_row(100, 0, 1, true);
     assert_eq!(coverage.sorted_spans(), None);
 }
+
+#[test]
+fn streamed_equals_the_framebuffer_render_with_the_thesis_tuning() {
+    // The thesis's fill (each object's volume projected and scan-converted), which the streamed
+    // render's per-row coverage redoes for every row.
+    for (name, text) in [("snooker", SNOOKER), ("lattice", LATTICE)] {
+        for optimizations in [Optimizations::ALL, Optimizations { pixelbuffer: true, ..Optimizations::NONE }] {
+            let mut description = description(text);
+            description.optimizations = optimizations;
+            let mut scene = Scene::<f64, CAPACITY>::prepare(&description).unwrap();
+            scene.acceleration.rebuild(&scene.camera, optimizations, &description.objects, crate::optimize::Tuning::THESIS);
+            assert!(!scene.acceleration.tuning().tight_silhouettes);
+            let (expected, statistics) = framebuffer_render(&scene);
+            let (sink, streamed) = streamed_render(&scene);
+            assert!(sink.pixels.iter().zip(&expected).all(|(a, b)| a == b), "{name} {optimizations:?}");
+            assert_eq!(streamed, statistics, "{name} {optimizations:?}");
+            assert_eq!(sink.broken, 0, "{name} {optimizations:?}");
+        }
+    }
+}
