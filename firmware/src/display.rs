@@ -1,82 +1,141 @@
-//! Where the render's palette indices go: a framebuffer in RAM (what the host receives, and
-//! what the Pixelbuffer optimization reads back) and, on boards with one, the display, which is
-//! flushed as each row finishes.
+//! Where the render's palette indices go: row by row to the host (`framebuffer.bin`) and, on
+//! boards with one, to the display, each row as soon as it is finished. No framebuffer: the
+//! streamed render (`microtrace::render::render_pga_streamed_sized`) writes each row once and
+//! never reads it back, so one row of palette indices is all the firmware keeps (on the stack,
+//! `StreamedRows`). With the `framebuffer` feature (the framebuffer render, which Pixelbuffer
+//! reads back) or `progressive` (whose passes write each row four times), the picture is kept in
+//! a RAM framebuffer instead (`FramebufferAndDisplay`) and written to the host after the render.
 
-use core::convert::Infallible;
+use embedded_graphics::pixelcolor::GrayColor;
+use microtrace::pixel::{grey_level, PixelSink};
+#[cfg(any(feature = "framebuffer", feature = "progressive"))]
+use microtrace::pixel::{FrameBuffer, PixelSource};
+use microtrace::shading::Palette;
 
-use embedded_graphics::pixelcolor::Gray4;
-use embedded_graphics::prelude::{DrawTarget, OriginDimensions, Size};
-use embedded_graphics::Pixel;
-use microtrace::pixel::{FrameBuffer, GreyDrawTargetSink, PixelSink, PixelSource};
+#[cfg(not(any(feature = "framebuffer", feature = "progressive")))]
+use crate::semihosting::HostFile;
 
-/// A display that buffers drawing and sends it on `flush`.
-pub trait FlushRows {
-    fn flush(&mut self);
+/// A display that shows whole rows: the row's grey levels (0..15), left to right.
+pub trait RowDisplay {
+    fn show_row(&mut self, y: u16, levels: impl Iterator<Item = u8>);
 }
 
 /// The display type of a board without one.
 #[cfg_attr(feature = "lm3s6965evb", allow(dead_code))]
 pub struct NoDisplay;
 
-impl OriginDimensions for NoDisplay {
-    fn size(&self) -> Size {
-        Size::zero()
+impl RowDisplay for NoDisplay {
+    fn show_row(&mut self, _y: u16, _levels: impl Iterator<Item = u8>) {}
+}
+
+/// The grey levels of a row of palette indices (the core's `grey_level`, the LUT entry's
+/// luminance), worked out once for each run of equal indices.
+fn levels<'a>(palette: &'a Palette, indices: &'a [u8]) -> impl Iterator<Item = u8> + 'a {
+    let mut last: Option<(u8, u8)> = None;
+    indices.iter().map(move |&index| match last {
+        Some((seen, level)) if seen == index => level,
+        _ => {
+            let level = grey_level(palette, index).luma();
+            last = Some((index, level));
+            level
+        }
+    })
+}
+
+/// The streamed render's sink: the row being traced, sent to the host and the display when it
+/// is done. Every pixel of a row is written before its `row_done` (the streamed render's
+/// promise), so nothing of an earlier row is needed.
+#[cfg(not(any(feature = "framebuffer", feature = "progressive")))]
+pub struct StreamedRows<'a, D, const WIDTH: usize> {
+    row: [u8; WIDTH],
+    host: HostFile,
+    pub display: Option<D>,
+    palette: &'a Palette,
+    /// Rows the host did not take whole (reported after the render: the render cannot stop).
+    pub failed_writes: u16,
+    /// The bytes sent to the host: the whole picture's once the render is done.
+    pub sent_bytes: usize,
+}
+
+#[cfg(not(any(feature = "framebuffer", feature = "progressive")))]
+impl<'a, D: RowDisplay, const WIDTH: usize> StreamedRows<'a, D, WIDTH> {
+    pub fn new(host: HostFile, display: Option<D>, palette: &'a Palette) -> Self {
+        Self { row: [0; WIDTH], host, display, palette, failed_writes: 0, sent_bytes: 0 }
     }
 }
 
-impl DrawTarget for NoDisplay {
-    type Color = Gray4;
-    type Error = Infallible;
-    fn draw_iter<I: IntoIterator<Item = Pixel<Gray4>>>(&mut self, _pixels: I) -> Result<(), Infallible> {
-        Ok(())
+#[cfg(not(any(feature = "framebuffer", feature = "progressive")))]
+impl<D: RowDisplay, const WIDTH: usize> PixelSink<u8> for StreamedRows<'_, D, WIDTH> {
+    fn set_pixel(&mut self, x: u16, _y: u16, value: u8) {
+        if let Some(pixel) = self.row.get_mut(usize::from(x)) {
+            *pixel = value;
+        }
+    }
+
+    fn write_row(&mut self, x: u16, _y: u16, values: &[u8]) {
+        for (pixel, value) in self.row.iter_mut().skip(usize::from(x)).zip(values) {
+            *pixel = *value;
+        }
+    }
+
+    fn fill_row(&mut self, x: u16, _y: u16, width: u16, value: u8) {
+        for pixel in self.row.iter_mut().skip(usize::from(x)).take(usize::from(width)) {
+            *pixel = value;
+        }
+    }
+
+    fn row_done(&mut self, y: u16) {
+        if self.host.write_all(&self.row) {
+            self.sent_bytes += WIDTH;
+        } else {
+            self.failed_writes = self.failed_writes.saturating_add(1);
+        }
+        if let Some(display) = &mut self.display {
+            display.show_row(y, levels(self.palette, &self.row));
+        }
     }
 }
 
-impl FlushRows for NoDisplay {
-    fn flush(&mut self) {}
-}
-
-/// The render's sink: every pixel into the framebuffer, and into the display when there is one.
+/// The framebuffer render's and the progressive render's sink: every pixel into the
+/// framebuffer; each finished row sent from it to the display, when there is one.
+#[cfg(any(feature = "framebuffer", feature = "progressive"))]
 pub struct FramebufferAndDisplay<'a, D> {
     pub framebuffer: FrameBuffer<'a, u8>,
-    pub display: Option<GreyDrawTargetSink<'a, D>>,
+    pub display: Option<D>,
+    pub palette: &'a Palette,
 }
 
-impl<D: DrawTarget<Color = Gray4> + FlushRows> PixelSink<u8> for FramebufferAndDisplay<'_, D> {
+#[cfg(any(feature = "framebuffer", feature = "progressive"))]
+impl<D: RowDisplay> PixelSink<u8> for FramebufferAndDisplay<'_, D> {
     fn set_pixel(&mut self, x: u16, y: u16, value: u8) {
         self.framebuffer.set_pixel(x, y, value);
-        if let Some(display) = &mut self.display {
-            display.set_pixel(x, y, value);
-        }
     }
 
     fn write_row(&mut self, x: u16, y: u16, values: &[u8]) {
         self.framebuffer.write_row(x, y, values);
-        if let Some(display) = &mut self.display {
-            display.write_row(x, y, values);
-        }
     }
 
     fn fill_row(&mut self, x: u16, y: u16, width: u16, value: u8) {
         self.framebuffer.fill_row(x, y, width, value);
-        if let Some(display) = &mut self.display {
-            display.fill_row(x, y, width, value);
-        }
     }
 
-    /// Pixelbuffer's marks stay in the framebuffer: every one is overwritten before its row
-    /// is done, so the display is sent only the picture.
+    /// Pixelbuffer's marks are overwritten before their row is done: the display is sent only
+    /// finished rows, so it never shows them.
     fn mark_row(&mut self, x: u16, y: u16, width: u16, value: u8) {
         self.framebuffer.fill_row(x, y, width, value);
     }
 
-    fn row_done(&mut self, _y: u16) {
-        if let Some(display) = &mut self.display {
-            display.target.flush();
+    fn row_done(&mut self, y: u16) {
+        let Some(display) = &mut self.display else { return };
+        let width = usize::from(self.framebuffer.width());
+        let start = usize::from(y) * width;
+        if let Some(row) = self.framebuffer.pixels().get(start..start + width) {
+            display.show_row(y, levels(self.palette, row));
         }
     }
 }
 
+#[cfg(any(feature = "framebuffer", feature = "progressive"))]
 impl<D> PixelSource<u8> for FramebufferAndDisplay<'_, D> {
     fn get_pixel(&self, x: u16, y: u16) -> Option<u8> {
         self.framebuffer.get_pixel(x, y)

@@ -1,7 +1,8 @@
 //! MicroTrace firmware: renders the scene chosen at build time (firmware/build.rs) on a
 //! Cortex-M, shows it on the board's display if it has one, and reports to the host by
 //! semihosting: `framebuffer.bin` (palette indices, rows top first, as the data of an
-//! uncompressed PGA file) and `report.txt` (statistics, peak stack). The instruction count is
+//! uncompressed PGA file; sent a row at a time as the render finishes each, with no framebuffer
+//! in RAM: src/display.rs) and `report.txt` (statistics, peak stack). The instruction count is
 //! taken by a QEMU plugin at the three markers in `measurement`: the frame (preparation plus
 //! render), split at the render marker.
 #![no_std]
@@ -23,16 +24,24 @@ mod scene {
 }
 
 use cortex_m_rt::{entry, exception};
-use embedded_graphics::prelude::Point;
-use microtrace::pixel::{FrameBuffer, GreyDrawTargetSink, PixelSink, PixelSource};
-#[cfg(not(feature = "progressive"))]
-use microtrace::render::{render_pga_sized, Statistics};
+use microtrace::pixel::PixelSink;
+#[cfg(any(feature = "framebuffer", feature = "progressive"))]
+use microtrace::pixel::{FrameBuffer, PixelSource};
 #[cfg(feature = "progressive")]
 use microtrace::render::{render_pga_progressive, PassStatistics};
+#[cfg(all(feature = "framebuffer", not(feature = "progressive")))]
+use microtrace::render::render_pga_sized;
+#[cfg(not(any(feature = "framebuffer", feature = "progressive")))]
+use microtrace::render::render_pga_streamed_sized;
+#[cfg(not(feature = "progressive"))]
+use microtrace::render::Statistics;
 use microtrace::scene::Scene;
 
 use decimal::Decimal;
+#[cfg(any(feature = "framebuffer", feature = "progressive"))]
 use display::FramebufferAndDisplay;
+#[cfg(not(any(feature = "framebuffer", feature = "progressive")))]
+use display::StreamedRows;
 use semihosting::{print, HostFile};
 
 /// Sized by the scene: exactly its objects.
@@ -50,19 +59,25 @@ fn main() -> ! {
     #[cfg(microtrace_fault_test)]
     fault::provoke_if_asked();
     let display = board::init();
+    #[cfg(any(feature = "framebuffer", feature = "progressive"))]
     let Some(pixels) = cortex_m::singleton!(: [u8; scene::PIXEL_COUNT] = [0; scene::PIXEL_COUNT]) else {
         fail("framebuffer taken twice")
     };
+    // The streamed build sends each row to the host as it is done: the file is open first.
+    #[cfg(not(any(feature = "framebuffer", feature = "progressive")))]
+    let Some(file) = HostFile::create(b"framebuffer.bin\0") else { fail("cannot create framebuffer.bin") };
 
     // The frame is measured: preparation, the sink's set-up and the render.
     measurement::microtrace_measure_start();
     let scene = prepare(SCENE);
 
-    let Some(framebuffer) = FrameBuffer::new(pixels, scene::WIDTH, scene::HEIGHT) else { fail("framebuffer size") };
-    let mut sink = FramebufferAndDisplay {
-        framebuffer,
-        display: display.map(|target| GreyDrawTargetSink { target, palette: &scene.palette, offset: Point::zero() }),
+    #[cfg(any(feature = "framebuffer", feature = "progressive"))]
+    let mut sink = {
+        let Some(framebuffer) = FrameBuffer::new(pixels, scene::WIDTH, scene::HEIGHT) else { fail("framebuffer size") };
+        FramebufferAndDisplay { framebuffer, display, palette: &scene.palette }
     };
+    #[cfg(not(any(feature = "framebuffer", feature = "progressive")))]
+    let mut sink = StreamedRows::<_, { scene::WIDTH as usize }>::new(file, display, &scene.palette);
     let mut statistics = Passes::default();
 
     measurement::microtrace_measure_render();
@@ -71,11 +86,21 @@ fn main() -> ! {
 
     let (stack_peak_bytes, stack_size_bytes) = stack::peak_and_size();
 
-    let Some(mut file) = HostFile::create(b"framebuffer.bin\0") else { fail("cannot create framebuffer.bin") };
-    if !file.write_all(sink.framebuffer.pixels()) {
-        fail("cannot write framebuffer.bin");
+    #[cfg(any(feature = "framebuffer", feature = "progressive"))]
+    {
+        let Some(mut file) = HostFile::create(b"framebuffer.bin\0") else { fail("cannot create framebuffer.bin") };
+        if !file.write_all(sink.framebuffer.pixels()) {
+            fail("cannot write framebuffer.bin");
+        }
     }
-    drop(file);
+    #[cfg(not(any(feature = "framebuffer", feature = "progressive")))]
+    {
+        if sink.failed_writes != 0 || sink.sent_bytes != scene::PIXEL_COUNT {
+            fail("cannot write framebuffer.bin");
+        }
+        // Closes framebuffer.bin before the report is written.
+        drop(sink);
+    }
 
     let mut report = report::Report::new();
     report.name("board", scene::BOARD_NAME);
@@ -120,15 +145,24 @@ type Passes = Statistics;
 type Passes = PassStatistics;
 
 /// The render, out of line like `prepare`: its per-render tables (shadow culling, about 2 KB for
-/// the lattice) are on the stack only while it runs, not under `prepare` as well.
+/// the lattice) are on the stack only while it runs, not under `prepare` as well. The streamed
+/// render: each row traced into the sink's one row, then sent (src/display.rs).
 #[inline(never)]
-#[cfg(not(feature = "progressive"))]
+#[cfg(not(any(feature = "framebuffer", feature = "progressive")))]
+fn render<S: PixelSink<u8>>(scene: &PreparedScene, sink: &mut S, statistics: &mut Passes) {
+    render_pga_streamed_sized::<scene::Number, S, { scene::OBJECT_COUNT }, { scene::TREE_DEPTH }, { scene::ANTIALIAS_ROW }>(scene, sink, statistics);
+}
+
+/// The framebuffer render (the `framebuffer` feature): Pixelbuffer's fill marked in the
+/// framebuffer and read back, each finished row sent from it to the display.
+#[inline(never)]
+#[cfg(all(feature = "framebuffer", not(feature = "progressive")))]
 fn render<S: PixelSink<u8> + PixelSource<u8>>(scene: &PreparedScene, sink: &mut S, statistics: &mut Passes) {
     render_pga_sized::<scene::Number, S, { scene::OBJECT_COUNT }, { scene::TREE_DEPTH }, { scene::ANTIALIAS_ROW }>(scene, sink, statistics);
 }
 
 /// The progressive render (the `progressive` feature): coarse to fine, each pass straight into
-/// the framebuffer and the display, flushed as each band of blocks is drawn.
+/// the framebuffer, and its rows sent to the display as each band of blocks is drawn.
 #[inline(never)]
 #[cfg(feature = "progressive")]
 fn render<S: PixelSink<u8> + PixelSource<u8>>(scene: &PreparedScene, sink: &mut S, statistics: &mut Passes) {

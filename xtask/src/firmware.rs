@@ -118,6 +118,9 @@ pub struct FirmwareOptions {
     pub primitives: Primitives,
     /// Build with the firmware's `progressive` feature: the render traces coarse to fine.
     pub progressive: bool,
+    /// Build with the firmware's `framebuffer` feature: the framebuffer render instead of the
+    /// streamed one (the same picture and statistics; 8 KB more static RAM).
+    pub framebuffer: bool,
     pub out: PathBuf,
     pub timeout: Duration,
     /// Build the fault test and provoke this fault (the run then fails, saying what happened).
@@ -136,6 +139,7 @@ impl FirmwareOptions {
             optimizations: "scene".to_owned(),
             primitives: Primitives::Scene,
             progressive: false,
+            framebuffer: false,
             out: out.into(),
             timeout: Duration::from_secs(300),
             provoke: None,
@@ -258,6 +262,9 @@ pub fn run(options: &FirmwareOptions) -> Result<FirmwareRun, String> {
     if options.progressive {
         names.insert("display", "progressive".to_owned());
     }
+    if options.framebuffer {
+        names.insert("render", "framebuffer".to_owned());
+    }
     let report_json = out.join("report.json");
     std::fs::write(&report_json, json(&names, &integers)).map_err(|error| format!("{}: {error}", report_json.display()))?;
     let _ = std::fs::remove_file(out.join("report.txt"));
@@ -341,6 +348,9 @@ fn build(options: &FirmwareOptions, scene: &Path, primitive_features: &[&str]) -
     features.extend(number_feature(&options.number));
     if options.progressive {
         features.push("progressive");
+    }
+    if options.framebuffer {
+        features.push("framebuffer");
     }
     let output = Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
         .args(["build", "--release", "--quiet", "--no-default-features"])

@@ -10,7 +10,7 @@ fn usage() -> &'static str {
     "usage:
   cargo xtask firmware [--scene FILE] [--board lm3s6965evb|mps2-an386] [--number f64|f32|fixed|fixed16|f32-micromath|soft32]
                        [--opt scene|all|none|pixelbuffer,extents,grid,sortlist] [--out DIR]
-                       [--timeout SECONDS] [--stack-reserve BYTES] [--progressive]
+                       [--timeout SECONDS] [--stack-reserve BYTES] [--progressive] [--framebuffer]
                        [--provoke panic|hard-fault|unexpected-interrupt|stack-overflow]
       Builds the firmware for the scene (default scenes/snooker.mts), runs it under QEMU and
       leaves framebuffer.bin, oled.png (lm3s6965evb) and report.json in DIR
@@ -18,7 +18,8 @@ fn usage() -> &'static str {
       does that before preparing the scene: the run fails with the firmware's message.
       --stack-reserve: the stack the build's RAM check keeps free (default 12288).
       --progressive renders coarse to fine (8x8 blocks, then 4x4, 2x2, every pixel): the same
-      image, the rays of each pass reported.
+      image, the rays of each pass reported. --framebuffer builds the framebuffer render (the
+      picture in an 8 KB RAM framebuffer) instead of the streamed one (rows sent as they are done).
   cargo xtask firmware-example
       Builds (does not run) the real-board examples in firmware/examples/
       (Raspberry Pi Pico + SSD1306, Raspberry Pi Pico + ST7789).
@@ -87,6 +88,7 @@ fn firmware_task(arguments: &[String]) -> Result<(), String> {
     let mut provoke = None;
     let mut stack_reserve = None;
     let mut progressive = false;
+    let mut framebuffer = false;
     let mut rest = arguments.iter();
     while let Some(flag) = rest.next() {
         let mut value = || rest.next().cloned().ok_or_else(|| format!("{flag} needs a value\n{}", usage()));
@@ -100,6 +102,7 @@ fn firmware_task(arguments: &[String]) -> Result<(), String> {
             "--opt" => optimizations = value()?,
             "--out" => out = Some(PathBuf::from(value()?)),
             "--progressive" => progressive = true,
+            "--framebuffer" => framebuffer = true,
             "--timeout" => {
                 let seconds = value()?;
                 timeout = Duration::from_secs(seconds.parse().map_err(|_| format!("--timeout {seconds}: not a number of seconds"))?);
@@ -129,6 +132,7 @@ fn firmware_task(arguments: &[String]) -> Result<(), String> {
     options.provoke = provoke;
     options.stack_reserve = stack_reserve;
     options.progressive = progressive;
+    options.framebuffer = framebuffer;
     let run = firmware::run(&options)?;
     println!("{}", firmware::summary(&run, &options));
     Ok(())

@@ -279,8 +279,8 @@ pub fn markdown(runs: &[ReportRun]) -> String {
              `prepare` (the scene's preparation in place, the sink's set-up) and `render`. The lm3s6965evb\n\
              (Cortex-M3) has no FPU: `f32` and `f64` are software floating point there; the mps2-an386\n\
              (Cortex-M4F) runs `f32` in hardware. Flash is text + data; static RAM is data + bss (the\n\
-             framebuffer, the OLED's copy on the lm3s6965evb, and the prepared scene with its acceleration\n\
-             structures). `f64 routines` and `panic symbols` count the linked functions of each kind\n\
+             prepared scene with its acceleration structures; no framebuffer and no display copy: each row\n\
+             goes to the host and the OLED as it is done). `f64 routines` and `panic symbols` count the linked functions of each kind\n\
              (double-precision soft float and libm's `f64` functions; panic paths), from the ELF's\n\
              symbols; each run's `linked-audit.txt` names them.\n\n";
     text += &format!(

@@ -11,6 +11,7 @@ mod secondary;
 mod progressive;
 mod shadow;
 mod statistics;
+mod streamed;
 mod surface;
 mod trace;
 
@@ -18,6 +19,7 @@ pub use primary::{nearest_hit, nearest_hit_cached, NearestHit};
 pub use progressive::{render_pga_pass, render_pga_progressive, render_rgb_pass, render_rgb_progressive, traced_in_pass, PassStatistics, PASSES, PASS_SIZES};
 pub use shadow::{in_shadow, in_shadow_cached, in_shadow_culled, shadow_origin, ShadowCache, ShadowCulling};
 pub use statistics::Statistics;
+pub use streamed::{render_pga_streamed, render_pga_streamed_sized, render_rgb_streamed};
 pub use trace::{fill_volumes, fill_volumes_rows, render_pga, render_pga_rows, render_pga_sized, render_rgb, ANTIALIAS_ROW, render_rgb_rows, shade_pixel, ShadedPixel};
 
 #[cfg(test)]

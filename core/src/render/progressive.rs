@@ -184,14 +184,47 @@ pub(crate) struct RowCoverage<const MAX_OBJECTS: usize> {
 }
 
 impl<const MAX_OBJECTS: usize> RowCoverage<MAX_OBJECTS> {
+    /// No span yet: covers nothing.
+    pub(crate) const fn empty() -> Self {
+        Self { spans: [(0, 0); MAX_OBJECTS], count: 0, overflowed: false }
+    }
+
     pub(crate) fn of<N: Number>(scene: &Scene<N, MAX_OBJECTS>, row: u16) -> Self {
-        let mut coverage = Self { spans: [(0, 0); MAX_OBJECTS], count: 0, overflowed: false };
+        let mut coverage = Self::empty();
         fill_volumes_rows(scene, &mut coverage, true, false, row..row.saturating_add(1));
         coverage
     }
 
     pub(crate) fn covers(&self, column: u16) -> bool {
         self.overflowed || self.spans.iter().take(self.count).any(|&(first, width)| column >= first && column - first < width)
+    }
+
+    /// The spans sorted by their first column (an insertion sort: a row has a few), or `None`
+    /// when there were more than the coverage holds and the whole row counts as covered. For the
+    /// streamed render (`super::streamed`), which walks them once a row instead of testing each
+    /// pixel against every span.
+    pub(crate) fn sorted_spans(&mut self) -> Option<&[(u16, u16)]> {
+        if self.overflowed {
+            return None;
+        }
+        let spans = self.spans.get_mut(..self.count)?;
+        for next in 1..spans.len() {
+            let Some(&moving) = spans.get(next) else { break };
+            let mut slot = next;
+            while let Some(&before) = slot.checked_sub(1).and_then(|previous| spans.get(previous)) {
+                if before.0 <= moving.0 {
+                    break;
+                }
+                if let Some(place) = spans.get_mut(slot) {
+                    *place = before;
+                }
+                slot -= 1;
+            }
+            if let Some(place) = spans.get_mut(slot) {
+                *place = moving;
+            }
+        }
+        Some(spans)
     }
 }
 

@@ -1,5 +1,5 @@
 //! Board support: one folder per board, one board per build (a cargo feature). Each provides
-//! `Display` (an embedded-graphics `DrawTarget<Color = Gray4>` with `FlushRows`), `init()`
+//! `Display` (a `display::RowDisplay`: whole rows of grey levels), `init()`
 //! and `hold_picture_for_capture()`; the render and the report are shared (main.rs).
 
 #[cfg(all(feature = "lm3s6965evb", feature = "mps2-an386"))]

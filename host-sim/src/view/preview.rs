@@ -5,7 +5,7 @@
 //! `RowDisplaySink`:
 //!
 //! - the lm3s6965evb's 128x64 16-grey SSD0323 OLED: `LutGrey` (the look-up-table entry's luma,
-//!   `grey_level`, as the firmware's `GreyDrawTargetSink`), into a `Gray4` display;
+//!   `grey_level`, as the firmware's OLED rows), into a `Gray4` display;
 //! - a 128x64 1-bit SSD1306 (the Pico example): `LutGrey` through the core's `OrderedDither`
 //!   into a `BinaryColor` display, lit dots white;
 //! - a 240x240 RGB565 panel (the Pico + ST7789 example): `LutColour<Rgb565>` into an `Rgb565`

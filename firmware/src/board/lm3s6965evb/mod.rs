@@ -16,9 +16,8 @@ pub type Display = Ssd0323<spi::SelectedDevice<spi::Ssi0, spi::GpioOutput>, spi:
 
 /// Brings up the OLED, cleared (none if it does not answer).
 pub fn init() -> Option<Display> {
-    let screen = cortex_m::singleton!(: ssd0323::ScreenCopy = [[0; 64]; ssd0323::HEIGHT])?;
     let device = spi::SelectedDevice::new(spi::Ssi0::new(), spi::oled_select());
-    Ssd0323::new(device, spi::oled_data_command(), screen).ok()
+    Ssd0323::new(device, spi::oled_data_command()).ok()
 }
 
 /// Files that `cargo xtask firmware` uses to capture the screen before the firmware exits
@@ -49,6 +48,3 @@ pub fn hold_picture_for_capture() -> bool {
 /// The peripherals the firmware touches (SSI0, GPIO C and D, system control) lie in the first
 /// megabyte of the peripheral region: the MPU's region for them (src/fault.rs).
 pub const PERIPHERALS: (u32, u32) = (0x4000_0000, 1 << 20);
-
-/// The OLED's RAM copy, static RAM the scene check counts (src/ram.rs).
-pub const DISPLAY_COPY_BYTES: usize = core::mem::size_of::<ssd0323::ScreenCopy>();

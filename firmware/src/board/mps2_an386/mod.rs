@@ -25,6 +25,3 @@ pub fn hold_picture_for_capture() -> bool {
 /// The APB peripherals (UARTs, timers, the FPGA's registers), the MPU's region for them
 /// (src/fault.rs); the firmware uses none, semihosting is all it needs.
 pub const PERIPHERALS: (u32, u32) = (0x4000_0000, 1 << 20);
-
-/// No display, so no display copy (src/ram.rs).
-pub const DISPLAY_COPY_BYTES: usize = 0;

@@ -1,0 +1,243 @@
+//! The streamed render against the framebuffer render: the same image and the same statistics,
+//! on the thesis scenes at the firmware's 128x64, every combination of the optimizations, in
+//! several number types; and what the sink sees (each pixel once, rows in order, no marks).
+
+extern crate std;
+
+use std::boxed::Box;
+use std::format;
+use std::vec;
+use std::vec::Vec;
+
+use super::*;
+use crate::number::{Fixed, Fixed16, SoftFloat};
+use crate::pixel::FrameBuffer;
+use crate::render::{render_pga, render_pga_sized, render_rgb};
+use crate::scene::{Optimizations, SceneDescription};
+
+const WIDTH: u16 = 128;
+const HEIGHT: u16 = 64;
+const PIXELS: usize = WIDTH as usize * HEIGHT as usize;
+const CAPACITY: usize = 72;
+
+const SNOOKER: &[u8] = include_bytes!("../../../../scenes/snooker.mts");
+const LATTICE: &[u8] = include_bytes!("../../../../scenes/lattice.mts");
+const LATTICE_ANTIALIASED: &[u8] = include_bytes!("../../../../scenes/lattice-antialiased.mts");
+const SNOOKER_POLISHED: &[u8] = include_bytes!("../../../../scenes/snooker-polished.mts");
+const MIRROR_BALLS: &[u8] = include_bytes!("../../../../scenes/ray-tree/mirror-balls.mts");
+const GLASS_IN_MIRROR: &[u8] = include_bytes!("../../../../scenes/ray-tree/glass-in-mirror.mts");
+
+fn description(text: &[u8]) -> SceneDescription<CAPACITY> {
+    let mut description = crate::parser::parse::<CAPACITY>(text).unwrap();
+    description.fit_to_size(WIDTH, HEIGHT);
+    description
+}
+
+/// A sink that checks the streamed render's promise: every pixel of a row written exactly once
+/// before its `row_done`, rows in order, never a Pixelbuffer mark.
+struct Stream<P> {
+    pixels: [P; PIXELS],
+    written: [u8; PIXELS],
+    next_row: u16,
+    fill_runs: u32,
+    marks: u32,
+    broken: u32,
+}
+
+impl<P: Copy> Stream<P> {
+    fn new(value: P) -> Self {
+        Self { pixels: [value; PIXELS], written: [0; PIXELS], next_row: 0, fill_runs: 0, marks: 0, broken: 0 }
+    }
+}
+
+impl<P: Copy> PixelSink<P> for Stream<P> {
+    fn set_pixel(&mut self, x: u16, y: u16, value: P) {
+        if y != self.next_row || x >= WIDTH {
+            self.broken += 1;
+            return;
+        }
+        let index = usize::from(y) * usize::from(WIDTH) + usize::from(x);
+        self.pixels[index] = value;
+        self.written[index] += 1;
+    }
+
+    fn fill_row(&mut self, x: u16, y: u16, width: u16, value: P) {
+        self.fill_runs += 1;
+        for offset in 0..width {
+            self.set_pixel(x + offset, y, value);
+        }
+    }
+
+    fn mark_row(&mut self, _x: u16, _y: u16, _width: u16, _value: P) {
+        self.marks += 1;
+    }
+
+    fn row_done(&mut self, y: u16) {
+        let start = usize::from(y) * usize::from(WIDTH);
+        if y != self.next_row || self.written[start..start + usize::from(WIDTH)].iter().any(|count| *count != 1) {
+            self.broken += 1;
+        }
+        self.next_row += 1;
+    }
+}
+
+fn framebuffer_render<N: Number>(scene: &Scene<N, CAPACITY>) -> (Vec<u8>, Statistics) {
+    let mut pixels = vec![0u8; PIXELS];
+    let mut frame = FrameBuffer::new(&mut pixels, WIDTH, HEIGHT).unwrap();
+    let mut statistics = Statistics::default();
+    render_pga(scene, &mut frame, &mut statistics);
+    (pixels, statistics)
+}
+
+fn streamed_render<N: Number>(scene: &Scene<N, CAPACITY>) -> (Box<Stream<u8>>, Statistics) {
+    let mut sink = Box::new(Stream::new(0u8));
+    let mut statistics = Statistics::default();
+    render_pga_streamed(scene, &mut *sink, &mut statistics);
+    (sink, statistics)
+}
+
+/// The two renders of `text` in `N` with `optimizations` agree; returns the rays traced.
+fn renders_agree<N: Number>(name: &str, text: &[u8], optimizations: Option<Optimizations>) -> u64 {
+    let mut description = description(text);
+    if let Some(optimizations) = optimizations {
+        description.optimizations = optimizations;
+    }
+    let scene = Scene::<N, CAPACITY>::prepare(&description).unwrap();
+    let (expected, statistics) = framebuffer_render(&scene);
+    let (sink, streamed) = streamed_render(&scene);
+    let context = format!("{name} in {} with {:?}", N::NAME, description.optimizations);
+    let differing = sink.pixels.iter().zip(&expected).filter(|(a, b)| a != b).count();
+    assert_eq!(differing, 0, "{context}: pixels differ");
+    assert_eq!(streamed, statistics, "{context}: statistics");
+    assert_eq!((sink.broken, sink.marks, sink.next_row), (0, 0, HEIGHT), "{context}: the stream");
+    // The thesis scenes have background that Pixelbuffer's fill leaves out.
+    if description.optimizations.pixelbuffer && (name == "snooker" || name == "lattice") {
+        assert!(sink.fill_runs > 0, "{context}: no background run");
+    }
+    statistics.rays_traced
+}
+
+#[test]
+fn streamed_equals_the_framebuffer_render_in_every_combination() {
+    for optimizations in Optimizations::combinations() {
+        for (name, text) in [("snooker", SNOOKER), ("lattice", LATTICE)] {
+            renders_agree::<f64>(name, text, Some(optimizations));
+            renders_agree::<f32>(name, text, Some(optimizations));
+            renders_agree::<SoftFloat>(name, text, Some(optimizations));
+        }
+    }
+}
+
+#[test]
+fn streamed_equals_the_framebuffer_render_in_fixed_point() {
+    for optimizations in [Optimizations::ALL, Optimizations::NONE, Optimizations { pixelbuffer: true, ..Optimizations::NONE }] {
+        for (name, text) in [("snooker", SNOOKER), ("lattice", LATTICE)] {
+            renders_agree::<Fixed>(name, text, Some(optimizations));
+            renders_agree::<Fixed16>(name, text, Some(optimizations));
+        }
+    }
+}
+
+#[test]
+fn pixelbuffer_saves_the_same_rays_streamed() {
+    let all = renders_agree::<f32>("snooker", SNOOKER, Some(Optimizations::ALL));
+    let without = renders_agree::<f32>("snooker", SNOOKER, Some(Optimizations { pixelbuffer: false, ..Optimizations::ALL }));
+    assert!(all < without, "Pixelbuffer traced {all} rays against {without}");
+}
+
+#[test]
+fn streamed_equals_the_framebuffer_render_antialiased_and_with_the_ray_tree() {
+    for optimizations in [None, Some(Optimizations::ALL), Some(Optimizations::NONE)] {
+        for (name, text) in [
+            ("lattice-antialiased", LATTICE_ANTIALIASED),
+            ("snooker-polished", SNOOKER_POLISHED),
+            ("mirror-balls", MIRROR_BALLS),
+            ("glass-in-mirror", GLASS_IN_MIRROR),
+        ] {
+            renders_agree::<f32>(name, text, optimizations);
+            renders_agree::<SoftFloat>(name, text, optimizations);
+        }
+    }
+}
+
+#[test]
+fn the_sized_variants_agree() {
+    // The firmware's sizes: the polished snooker's tree is 4 deep; a row of 129 corners.
+    for (name, text) in [("snooker-polished", SNOOKER_POLISHED), ("lattice-antialiased", LATTICE_ANTIALIASED), ("lattice", LATTICE)] {
+        let scene = Scene::<f32, CAPACITY>::prepare(&description(text)).unwrap();
+        let mut pixels = vec![0u8; PIXELS];
+        let mut frame = FrameBuffer::new(&mut pixels, WIDTH, HEIGHT).unwrap();
+        let mut expected = Statistics::default();
+        render_pga_sized::<f32, _, CAPACITY, 4, 129>(&scene, &mut frame, &mut expected);
+        let mut sink = Box::new(Stream::new(0u8));
+        let mut statistics = Statistics::default();
+        render_pga_streamed_sized::<f32, _, CAPACITY, 4, 129>(&scene, &mut *sink, &mut statistics);
+        assert!(sink.pixels.iter().zip(&pixels).all(|(a, b)| a == b), "{name}");
+        assert_eq!(statistics, expected, "{name}");
+        assert_eq!(sink.broken, 0, "{name}");
+    }
+}
+
+#[test]
+fn rgb_streamed_equals_the_framebuffer_render() {
+    for optimizations in [Optimizations::ALL, Optimizations::NONE] {
+        let mut description = description(SNOOKER);
+        description.optimizations = optimizations;
+        let scene = Scene::<f32, CAPACITY>::prepare(&description).unwrap();
+        let mut pixels = vec![[0u8; 3]; PIXELS];
+        let mut frame = FrameBuffer::new(&mut pixels, WIDTH, HEIGHT).unwrap();
+        let mut expected = Statistics::default();
+        render_rgb(&scene, &mut frame, &mut expected);
+        let mut sink = Box::new(Stream::new([0u8; 3]));
+        let mut statistics = Statistics::default();
+        render_rgb_streamed(&scene, &mut *sink, &mut statistics);
+        assert!(sink.pixels.iter().zip(&pixels).all(|(a, b)| a == b), "{optimizations:?}");
+        assert_eq!(statistics, expected, "{optimizations:?}");
+        assert_eq!(sink.broken, 0);
+    }
+}
+
+#[test]
+fn the_runs_merge_overlapping_and_touching_spans_and_fill_the_gaps() {
+    let mut coverage = RowCoverage::<4>::empty();
+    // Spans 10..20, 15..25, 25..30 (touching), 40..41, marked out of order.
+    for (first, width) in [(15, 10), (10, 10), (40, 1), (25, 5)] {
+        coverage.mark_row(first, 0, width, true);
+    }
+    let collect = |spans: Option<&[(u16, u16)]>, width: u16| {
+        let mut seen = Vec::new();
+        runs(spans, width, |covered, first, end| seen.push((covered, first, end)));
+        seen
+    };
+    let spans = coverage.sorted_spans().map(<[_]>::to_vec);
+    assert_eq!(spans.as_deref(), Some(&[(10, 10), (15, 10), (25, 5), (40, 1)][..]));
+    assert_eq!(collect(spans.as_deref(), 128), [(false, 0, 10), (true, 10, 30), (false, 30, 40), (true, 40, 41), (false, 41, 128)]);
+    // Clipped to the row; a span from column 0; a span past the row's end.
+    assert_eq!(collect(spans.as_deref(), 20), [(false, 0, 10), (true, 10, 20)]);
+    assert_eq!(collect(Some(&[(0, 5), (3, 4), (200, 3)]), 10), [(true, 0, 7), (false, 7, 10)]);
+    assert_eq!(collect(Some(&[]), 10), [(false, 0, 10)]);
+    assert_eq!(collect(None, 10), [(true, 0, 10)]);
+    // A fifth span does not fit: the whole row counts as covered.
+    coverage.mark_row(100, 0, 1, true);
+    assert_eq!(coverage.sorted_spans(), None);
+}
+
+#[test]
+fn streamed_equals_the_framebuffer_render_with_the_thesis_tuning() {
+    // The thesis's fill (each object's volume projected and scan-converted), which the streamed
+    // render's per-row coverage redoes for every row.
+    for (name, text) in [("snooker", SNOOKER), ("lattice", LATTICE)] {
+        for optimizations in [Optimizations::ALL, Optimizations { pixelbuffer: true, ..Optimizations::NONE }] {
+            let mut description = description(text);
+            description.optimizations = optimizations;
+            let mut scene = Scene::<f64, CAPACITY>::prepare(&description).unwrap();
+            scene.acceleration.rebuild(&scene.camera, optimizations, &description.objects, crate::optimize::Tuning::THESIS);
+            assert!(!scene.acceleration.tuning().tight_silhouettes);
+            let (expected, statistics) = framebuffer_render(&scene);
+            let (sink, streamed) = streamed_render(&scene);
+            assert!(sink.pixels.iter().zip(&expected).all(|(a, b)| a == b), "{name} {optimizations:?}");
+            assert_eq!(streamed, statistics, "{name} {optimizations:?}");
+            assert_eq!(sink.broken, 0, "{name} {optimizations:?}");
+        }
+    }
+}
