@@ -9,3 +9,4 @@ pub mod parallel;
 pub mod progress;
 pub mod rendering;
 pub mod scene_file;
+pub mod window_binary;

@@ -1,5 +1,6 @@
 //! `microtrace`: render MicroTrace scenes on the desktop, read the thesis's image files back,
-//! benchmark, and watch the tracer work in a simulator window.
+//! benchmark, and watch the tracer work in a simulator window (`view`, which runs the program
+//! `microtrace-view` so that this one does not link SDL2: see `microtrace_sim::window_binary`).
 
 use microtrace_sim::commands;
 
@@ -31,7 +32,8 @@ fn main() {
         Command::Render(args) => commands::render::run(args),
         Command::Decode(args) => commands::decode::run(args),
         Command::Bench(args) => commands::bench::run(args),
-        Command::View(args) => commands::view::run(args),
+        // The arguments were checked above; `microtrace-view` takes what followed `view`.
+        Command::View(_) => microtrace_sim::window_binary::run_view(env!("MICROTRACE_BUILD_ID"), std::env::args_os().skip(2)),
     };
     if let Err(error) = result {
         eprintln!("microtrace: {error:#}");

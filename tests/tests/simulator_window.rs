@@ -14,11 +14,12 @@ fn workspace() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).parent().expect("workspace root").to_path_buf()
 }
 
-/// Builds the `microtrace` binary and returns its path.
+/// Builds the `microtrace` binary and the window program `microtrace view` runs
+/// (`microtrace-view`, beside it), and returns the path of `microtrace`.
 fn microtrace_binary() -> PathBuf {
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
     let status = Command::new(cargo)
-        .args(["build", "-q", "-p", "microtrace-sim", "--bin", "microtrace"])
+        .args(["build", "-q", "-p", "microtrace-sim", "--bin", "microtrace", "--bin", "microtrace-view"])
         .current_dir(workspace())
         .status()
         .expect("run cargo build");
