@@ -360,6 +360,11 @@ where
         // no projection per frame.
         for index in 0..scene.objects.len() {
             let Some(extent) = acceleration.extent(index) else { continue };
+            // Rows outside the extent first: the streamed render fills one row at a time, and
+            // most objects miss it.
+            if extent.last_row < rows.start || extent.first_row >= rows.end {
+                continue;
+            }
             let stadium = acceleration.stadium(index);
             for row in rows.clone() {
                 let Some(span) = extent.row_span(row, screen.height) else { continue };
