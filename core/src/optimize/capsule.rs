@@ -455,7 +455,8 @@ impl Stadium {
         let r = i32::from(self.radius);
         let low = [i32::from(columns.0) * SUBPIXELS - r, i32::from(rows.0) * SUBPIXELS - r];
         let high = [i32::from(columns.1) * SUBPIXELS + r, i32::from(rows.1) * SUBPIXELS + r];
-        let [p, q] = self.ends.map(|end| end.map(i32::from));
+        let [[p0, p1], [q0, q1]] = self.ends;
+        let (p, q) = ([i32::from(p0), i32::from(p1)], [i32::from(q0), i32::from(q1)]);
         let d = [q[0] - p[0], q[1] - p[1]];
         let bounds = [columns, rows];
         let mut out = [(0u16, 0u16); 2];
@@ -507,7 +508,8 @@ impl Stadium {
     /// overflow counts as inside).
     #[inline]
     pub fn contains(&self, column: u16, row: u16) -> bool {
-        let [a, b] = self.ends.map(|end| end.map(i64::from));
+        let [[a0, a1], [b0, b1]] = self.ends;
+        let (a, b) = ([i64::from(a0), i64::from(a1)], [i64::from(b0), i64::from(b1)]);
         let point = [i64::from(column) * i64::from(SUBPIXELS), i64::from(row) * i64::from(SUBPIXELS)];
         let r = i64::from(self.radius);
         let d = [b[0] - a[0], b[1] - a[1]];

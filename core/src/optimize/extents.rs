@@ -29,7 +29,9 @@ impl Extent {
     pub fn diagonals_contain(&self, column: u16, row: u16, height: u16) -> bool {
         let sum = u32::from(column) + u32::from(row);
         let difference = u32::from(column) + u32::from(height - 1) - u32::from(row);
-        let [s1, s2, d1, d2] = self.diagonal.map(u32::from);
+        // Destructured, not `map`ped: `array::map` compiled to a loop through the stack.
+        let [s1, s2, d1, d2] = self.diagonal;
+        let (s1, s2, d1, d2) = (u32::from(s1), u32::from(s2), u32::from(d1), u32::from(d2));
         sum >= s1 && sum <= s2 && difference >= d1 && difference <= d2
     }
 
@@ -79,7 +81,8 @@ impl Extent {
             return None;
         }
         let (row, offset) = (i32::from(row), i32::from(height) - 1);
-        let [s1, s2, d1, d2] = self.diagonal.map(i32::from);
+        let [s1, s2, d1, d2] = self.diagonal;
+        let (s1, s2, d1, d2) = (i32::from(s1), i32::from(s2), i32::from(d1), i32::from(d2));
         // s1 ≤ column + row ≤ s2 and d1 ≤ column − row + height − 1 ≤ d2.
         let first = i32::from(self.first_column).max(s1 - row).max(d1 + row - offset);
         let last = i32::from(self.last_column).min(s2 - row).min(d2 + row - offset);
