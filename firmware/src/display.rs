@@ -79,8 +79,10 @@ impl<D: RowDisplay, const WIDTH: usize> PixelSink<u8> for StreamedRows<'_, D, WI
     }
 
     fn fill_row(&mut self, x: u16, _y: u16, width: u16, value: u8) {
-        for pixel in self.row.iter_mut().skip(usize::from(x)).take(usize::from(width)) {
-            *pixel = value;
+        // A slice's fill (word stores), not a byte at a time through an iterator.
+        let (start, end) = (usize::from(x).min(WIDTH), (usize::from(x) + usize::from(width)).min(WIDTH));
+        if let Some(run) = self.row.get_mut(start..end) {
+            run.fill(value);
         }
     }
 
