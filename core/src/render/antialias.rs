@@ -60,22 +60,20 @@ struct Sampler<'a, 'c, N, M, const MAX_OBJECTS: usize, const DEPTH: usize> {
 impl<N: Number, M: Mode<N>, const MAX_OBJECTS: usize, const DEPTH: usize> Sampler<'_, '_, N, M, MAX_OBJECTS, DEPTH> {
     fn sample(&self, x: u16, y: u16, statistics: &mut Statistics, cache: &mut ShadowCache) -> Rgb {
         let pixel = self.scene.camera.pixel(x, y);
-        let surface = primary_surface_then(self.scene, pixel, statistics, cache, self.culling, |at, lighting, statistics, cache| {
-            let object = self.scene.objects.get(at.object)?;
-            let local = self.mode.local(&object.material, lighting, pixel);
+        let surface = primary_surface_then(self.scene, pixel, statistics, cache, self.culling, |at, material, lighting, statistics, cache| {
+            let local = self.mode.local(material, lighting, pixel);
             #[cfg(feature = "ray-tree")]
             if self.scene.has_ray_tree() {
                 let context = super::ray_tree::TreeContext { scene: self.scene, colours: self.mode, pixel, culling: self.culling };
                 if let Some(mixed) = super::ray_tree::trace_tree::<N, M, MAX_OBJECTS, DEPTH>(&context, *at, local, statistics, cache) {
-                    return Some(mixed);
+                    return mixed;
                 }
             }
             #[cfg(not(feature = "ray-tree"))]
-            let _ = (statistics, cache);
-            Some(local)
+            let _ = (at, statistics, cache);
+            local
         });
-        // No hit, or (never) a hit on an object the scene lacks: the background.
-        to_rgb(surface.flatten().unwrap_or_else(|| self.mode.background()), self.scene)
+        to_rgb(surface.unwrap_or_else(|| self.mode.background()), self.scene)
     }
 }
 

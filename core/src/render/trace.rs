@@ -47,30 +47,14 @@ fn shade_pixel_cached<N: Number, const MAX_OBJECTS: usize>(
     cache: &mut ShadowCache,
     culling: &[ShadowCulling<'_, N>],
 ) -> ShadedPixel<N> {
-    match primary_surface(scene, pixel, statistics, cache, culling) {
-        Some((at, lighting)) => match scene.objects.get(at.object) {
-            Some(object) => ShadedPixel::Surface { material: object.material, lighting },
-            None => ShadedPixel::Background,
-        },
-        None => ShadedPixel::Background,
-    }
+    primary_surface_then(scene, pixel, statistics, cache, culling, |_, material, lighting, _, _| ShadedPixel::Surface { material: *material, lighting })
+        .unwrap_or(ShadedPixel::Background)
 }
 
-/// The primary ray's hit and its local lighting (a shadow ray per light). The material stays
-/// in the scene (`scene.objects[at.object]`): moved out per pixel, its copy (a `u8` among
-/// numbers, so a byte-wise `memcpy`) cost a fifth of a Cortex-M4F frame.
-pub(crate) fn primary_surface<N: Number, const MAX_OBJECTS: usize>(
-    scene: &Scene<N, MAX_OBJECTS>,
-    pixel: PixelPosition,
-    statistics: &mut Statistics,
-    cache: &mut ShadowCache,
-    culling: &[ShadowCulling<'_, N>],
-) -> Option<(SurfacePoint<N>, Lighting<N>)> {
-    primary_surface_then(scene, pixel, statistics, cache, culling, |at, lighting, _, _| (*at, lighting))
-}
-
-/// [`primary_surface`] handing the surface point and its lighting to `then`, whose result it
-/// returns: a pixel's value leaves in a register, where the surface point returned through
+/// The primary ray's hit, its material and its local lighting (a shadow ray per light), handed
+/// to `then`, whose result it returns. The material stays in the scene (moved out per pixel,
+/// its copy, a `u8` among numbers, so a byte-wise `memcpy`, cost a fifth of a Cortex-M4F
+/// frame), and a pixel's value leaves in a register, where the surface point returned through
 /// memory was a `memcpy` of about 100 bytes, twice a pixel, in a software number type (7 % of
 /// a Cortex-M3 `soft32` frame).
 #[inline(never)]
@@ -80,7 +64,7 @@ pub(crate) fn primary_surface_then<N: Number, R, const MAX_OBJECTS: usize>(
     statistics: &mut Statistics,
     cache: &mut ShadowCache,
     culling: &[ShadowCulling<'_, N>],
-    then: impl FnOnce(&SurfacePoint<N>, Lighting<N>, &mut Statistics, &mut ShadowCache) -> R,
+    then: impl FnOnce(&SurfacePoint<N>, &PreparedMaterial<N>, Lighting<N>, &mut Statistics, &mut ShadowCache) -> R,
 ) -> Option<R> {
     let ray = scene.camera.primary_ray(pixel)?;
     statistics.rays_traced += 1;
@@ -91,7 +75,7 @@ pub(crate) fn primary_surface_then<N: Number, R, const MAX_OBJECTS: usize>(
     // matrix, digest §11 B2), facing the viewer (seen from inside, a surface's inner side).
     let at = SurfacePoint::new(object.object_from_world.transposed_vector(hit.local_normal), &ray, hit.t, hit.object);
     let lighting = direct_lighting(scene, hit.object, at.point, at.normal, ray.direction, object.material.power, statistics, cache, culling);
-    Some(then(&at, lighting, statistics, cache))
+    Some(then(&at, &object.material, lighting, statistics, cache))
 }
 
 /// Renders the scene in PGA mode: one palette index per pixel, rows top first, calling
@@ -245,20 +229,18 @@ where
     N: Number,
     M: Mode<N>,
 {
-    primary_surface_then(scene, pixel, statistics, cache, culling, |at, lighting, statistics, cache| {
-        let material = &scene.objects.get(at.object)?.material;
+    primary_surface_then(scene, pixel, statistics, cache, culling, |at, material, lighting, statistics, cache| {
         #[cfg(feature = "ray-tree")]
         if scene.has_ray_tree() {
             let context = TreeContext { scene, colours: mode, pixel, culling };
             if let Some(mixed) = trace_tree::<N, M, MAX_OBJECTS, DEPTH>(&context, *at, mode.local(material, lighting, pixel), statistics, cache) {
-                return Some(mode.finish(mixed, pixel));
+                return mode.finish(mixed, pixel);
             }
         }
         #[cfg(not(feature = "ray-tree"))]
-        let _ = (statistics, cache);
-        Some(mode.surface(material, lighting, pixel))
+        let _ = (at, statistics, cache);
+        mode.surface(material, lighting, pixel)
     })
-    .flatten()
 }
 
 fn render<N, P, S, M, const MAX_OBJECTS: usize, const DEPTH: usize, const ROW: usize>(
