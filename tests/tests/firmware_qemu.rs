@@ -24,7 +24,7 @@ use microtrace::scene::{Scene, SceneDescription};
 // The budget of firmware/README.md for the lm3s6965evb (64 KB RAM, 256 KB flash): static RAM
 // (the prepared scene with its acceleration structures: no framebuffer, no OLED copy, the rows
 // streamed) plus peak stack leaves 28 KB of the RAM free.
-use xtask::budget::{FLASH_BYTES, FREE_RAM_BYTES, RAM_BYTES, STACK_BYTES, STATIC_RAM_BYTES};
+use xtask::budget::{DATA_BYTES, FLASH_BYTES, FREE_RAM_BYTES, RAM_BYTES, STACK_BYTES, STATIC_RAM_BYTES};
 use xtask::firmware::{self, Board, FirmwareOptions, FirmwareRun};
 
 const WIDTH: u16 = 128;
@@ -96,6 +96,9 @@ fn firmware_matches_host(name: &str, board: Board) {
     assert_eq!(numbers["instructions_per_pixel"], frame / numbers["pixels"]);
     assert_eq!(numbers["frame_instructions_per_pixel"], frame / numbers["pixels"]);
     linked_code_is_clean(name, board, numbers);
+    // The prepared scene is zero-initialised RAM: an initialised static would take its size
+    // in flash as well (Scene::UNPREPARED, every byte zero).
+    assert_eq!(numbers["data_bytes"], DATA_BYTES, "{name}: initialised statics (.data), which are also stored in flash");
 
     if let Some(oled_png) = &run.oled_png {
         let oled = xtask::oled::read_png(oled_png).unwrap();

@@ -47,12 +47,12 @@ impl<N: Number> Camera<N> {
     /// (`Scene::UNPREPARED`, which then costs only zero-initialised RAM).
     pub const UNSET: Self = Self {
         viewport: Viewport { x1: 0, x2: 0, y1: 0, y2: 0 },
-        window_x1: N::ZERO,
-        window_y1: N::ZERO,
-        spacing_x: N::ZERO,
-        spacing_y: N::ZERO,
-        view_plane: N::ZERO,
-        origin: RayOrigin::Parallel { direction: Vector3 { x: N::ZERO, y: N::ZERO, z: N::ZERO } },
+        window_x1: N::ZEROED,
+        window_y1: N::ZEROED,
+        spacing_x: N::ZEROED,
+        spacing_y: N::ZEROED,
+        view_plane: N::ZEROED,
+        origin: RayOrigin::Parallel { direction: Vector3 { x: N::ZEROED, y: N::ZEROED, z: N::ZEROED } },
     };
 
     /// `None` when the parallel direction is zero.

@@ -52,6 +52,12 @@ pub trait Number:
     const ONE: Self;
     /// The largest finite value: "no hit yet" and "unbounded shadow ray".
     const MAX: Self;
+    /// The value whose every byte is zero: a placeholder in storage that preparation writes
+    /// before anything reads it (`Scene::UNPREPARED`), so that the firmware's scene, a `static`
+    /// of such placeholders, is zero-initialised RAM (`.bss`) and takes no flash. It is
+    /// [`Number::ZERO`] but in `SoftFloat`, whose zero has a low exponent: there it is no
+    /// number to compute with.
+    const ZEROED: Self = Self::ZERO;
 
     /// Converts, saturating to the representable range. Used at scene set-up only.
     fn from_f64(value: f64) -> Self;

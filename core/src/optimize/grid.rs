@@ -51,12 +51,18 @@ pub type Entry = [u16; 3];
 
 const WHOLE_CELL: u16 = 0xFF00;
 
+/// A cell's width and height in pixels (at least 1, so dividing by them cannot fail).
+#[derive(Clone, Copy, Debug)]
+struct CellSize {
+    width: NonZeroU16,
+    height: NonZeroU16,
+}
+
 #[derive(Clone, Debug)]
 pub struct Grid<N, const MAX_OBJECTS: usize> {
-    /// False when the grid is off or its pool overflowed.
-    pub active: bool,
-    cell_width: NonZeroU16,
-    cell_height: NonZeroU16,
+    /// The cells' size; `None` when the grid is off or its pool overflowed (and, all bytes
+    /// zero, before it is built).
+    cells: Option<CellSize>,
     starts: [u16; CELLS + 1],
     pool: [[Entry; POOL_PER_OBJECT]; MAX_OBJECTS],
     /// With Sortlist: each entry's lower bound of `t` for the part of its object seen through
@@ -68,19 +74,15 @@ impl<N: Number, const MAX_OBJECTS: usize> Grid<N, MAX_OBJECTS> {
     /// Every byte zero, inactive: the value before [`Grid::rebuild`] (a `static` holding it
     /// costs zero-initialised RAM and no flash).
     pub const UNSET: Self = Self {
-        active: false,
-        cell_width: NonZeroU16::MIN,
-        cell_height: NonZeroU16::MIN,
+        cells: None,
         starts: [0; CELLS + 1],
         pool: [[[0; 3]; POOL_PER_OBJECT]; MAX_OBJECTS],
-        depth: [[N::ZERO; POOL_PER_OBJECT]; MAX_OBJECTS],
+        depth: [[N::ZEROED; POOL_PER_OBJECT]; MAX_OBJECTS],
     };
 
     pub fn inactive() -> Self {
         Self {
-            active: false,
-            cell_width: NonZeroU16::MIN,
-            cell_height: NonZeroU16::MIN,
+            cells: None,
             starts: [0; CELLS + 1],
             pool: [[[0; 3]; POOL_PER_OBJECT]; MAX_OBJECTS],
             depth: [[-N::MAX; POOL_PER_OBJECT]; MAX_OBJECTS],
@@ -117,7 +119,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Grid<N, MAX_OBJECTS> {
     ) {
         // The pool and the bounds are not cleared: the pass below writes every entry a cell
         // list reaches (clearing them cost the lattice 7 k instructions a frame on the Cortex-M4F).
-        self.active = false;
+        self.cells = None;
         self.starts.fill(0);
         if POOL_PER_OBJECT == 0 {
             return;
@@ -125,9 +127,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Grid<N, MAX_OBJECTS> {
         let grid = self;
         // At least 1, so the divisions below cannot be by zero.
         let (cell_width, cell_height) = (screen.width.saturating_sub(1) / GRID_SIZE + 1, screen.height.saturating_sub(1) / GRID_SIZE + 1);
-        grid.cell_width = NonZeroU16::new(cell_width).unwrap_or(NonZeroU16::MIN);
-        grid.cell_height = NonZeroU16::new(cell_height).unwrap_or(NonZeroU16::MIN);
-        let (cell_width, cell_height) = (grid.cell_width, grid.cell_height);
+        let (cell_width, cell_height) = (NonZeroU16::new(cell_width).unwrap_or(NonZeroU16::MIN), NonZeroU16::new(cell_height).unwrap_or(NonZeroU16::MIN));
         // Calls `add(cell, entry)` for every cell the object may cover.
         let visit = |object: u16, add: &mut dyn FnMut(usize, Entry)| {
             let Some(extent) = extents.get(usize::from(object)).copied() else { return };
@@ -270,30 +270,34 @@ impl<N: Number, const MAX_OBJECTS: usize> Grid<N, MAX_OBJECTS> {
                 sort_cell(bounds, pool);
             }
         }
-        grid.active = true;
+        grid.cells = Some(CellSize { width: cell_width, height: cell_height });
     }
 
     /// Back to [`Grid::inactive`], in place.
     pub fn clear(&mut self) {
-        self.active = false;
-        self.cell_width = NonZeroU16::MIN;
-        self.cell_height = NonZeroU16::MIN;
+        self.cells = None;
         self.starts.fill(0);
         self.pool.as_flattened_mut().fill([0; 3]);
         self.depth.as_flattened_mut().fill(-N::MAX);
     }
 
+    /// Whether the grid is in use (on, and its pool did not overflow).
+    pub fn is_active(&self) -> bool {
+        self.cells.is_some()
+    }
+
     /// The entries of the cell holding image pixel (column, row), and the pixel's offsets
-    /// from the cell's corner (saturated at 255).
+    /// from the cell's corner (saturated at 255); `None` when the grid is not active.
     #[inline]
-    pub fn cell(&self, column: u16, row: u16) -> (&[Entry], &[N], u16, u16) {
-        let (cell_column, cell_row) = ((column / self.cell_width).min(GRID_SIZE - 1), (row / self.cell_height).min(GRID_SIZE - 1));
+    pub fn cell(&self, column: u16, row: u16) -> Option<(&[Entry], &[N], u16, u16)> {
+        let CellSize { width, height } = self.cells?;
+        let (cell_column, cell_row) = ((column / width).min(GRID_SIZE - 1), (row / height).min(GRID_SIZE - 1));
         let cell = usize::from(cell_row) * GRID_SIZE as usize + usize::from(cell_column);
-        let (Some(start), Some(end)) = (self.starts.get(cell), self.starts.get(cell + 1)) else { return (&[], &[], 0, 0) };
+        let (Some(start), Some(end)) = (self.starts.get(cell), self.starts.get(cell + 1)) else { return Some((&[], &[], 0, 0)) };
         let (start, end) = (usize::from(*start), usize::from(*end));
-        let dx = (column - cell_column * self.cell_width.get()).min(255);
-        let dy = (row - cell_row * self.cell_height.get()).min(255);
-        (self.pool.as_flattened().get(start..end).unwrap_or(&[]), self.depth.as_flattened().get(start..end).unwrap_or(&[]), dx, dy)
+        let dx = (column - cell_column * width.get()).min(255);
+        let dy = (row - cell_row * height.get()).min(255);
+        Some((self.pool.as_flattened().get(start..end).unwrap_or(&[]), self.depth.as_flattened().get(start..end).unwrap_or(&[]), dx, dy))
     }
 
     /// Total entries over all cells.

@@ -102,7 +102,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
         screen: Screen::UNSET,
         order: [0; MAX_OBJECTS],
         extents: [Extent { first_column: 0, last_column: 0, first_row: 0, last_row: 0, diagonal: [0; 4] }; MAX_OBJECTS],
-        near: [N::ZERO; MAX_OBJECTS],
+        near: [N::ZEROED; MAX_OBJECTS],
         stadiums: [None; MAX_OBJECTS],
         #[cfg(feature = "acceleration-tables")]
         shadow: [ShadowBound::UNSET; MAX_OBJECTS],
@@ -268,7 +268,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
     /// Grid: the entries of the pixel's cell and the pixel's offsets in it; `None` without a grid.
     #[inline]
     pub fn grid_cell(&self, pixel: PixelPosition) -> Option<(&[grid::Entry], &[N], u16, u16)> {
-        self.grid.active.then(|| self.grid.cell(pixel.column, pixel.row))
+        self.grid.cell(pixel.column, pixel.row)
     }
 
     /// Every object, in test order (sorted by depth bound with Sortlist).
@@ -358,7 +358,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
 
     /// Whether the grid is in use (on, and its pool did not overflow).
     pub fn grid_active(&self) -> bool {
-        self.grid.active
+        self.grid.is_active()
     }
 
     /// Entries over all grid cells.

@@ -33,11 +33,11 @@ pub struct ShadowBound<N> {
 impl<N: Number> ShadowBound<N> {
     /// Every byte zero: the value before the acceleration is built.
     pub const UNSET: Self = Self {
-        centre: Vector3 { x: N::ZERO, y: N::ZERO, z: N::ZERO },
-        axis: Vector3 { x: N::ZERO, y: N::ZERO, z: N::ZERO },
-        half: N::ZERO,
-        radius: N::ZERO,
-        reach: N::ZERO,
+        centre: Vector3 { x: N::ZEROED, y: N::ZEROED, z: N::ZEROED },
+        axis: Vector3 { x: N::ZEROED, y: N::ZEROED, z: N::ZEROED },
+        half: N::ZEROED,
+        radius: N::ZEROED,
+        reach: N::ZEROED,
     };
 
     pub fn always() -> Self {

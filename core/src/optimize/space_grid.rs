@@ -45,8 +45,8 @@ pub struct SpaceGrid<N, const MAX_OBJECTS: usize> {
 impl<N: Number, const MAX_OBJECTS: usize> SpaceGrid<N, MAX_OBJECTS> {
     pub const NONE: Self = Self {
         resolution: 0,
-        low: Vector3 { x: N::ZERO, y: N::ZERO, z: N::ZERO },
-        cell: Vector3 { x: N::ZERO, y: N::ZERO, z: N::ZERO },
+        low: Vector3 { x: N::ZEROED, y: N::ZEROED, z: N::ZEROED },
+        cell: Vector3 { x: N::ZEROED, y: N::ZEROED, z: N::ZEROED },
         starts: [0; CELLS + 1],
         entries: [[0; ENTRIES_PER_OBJECT]; MAX_OBJECTS],
         large: BlockerSet::EMPTY,
