@@ -265,16 +265,10 @@ impl microtrace::number::SquareRoot for HostSqrt {
 /// Prepares the scene on the host in the number type `H` (as `microtrace render` does) and
 /// appends its parts prepared ahead (`microtrace::scene::ahead`) to `out`.
 fn ahead<H: microtrace::number::Number>(description: &SceneDescription<PARSE_CAPACITY>, out: &mut String) -> Result<(), Ahead> {
-    use microtrace::optimize::{capsule::Capsule, shadow::ShadowBound, ObjectBounds};
+    use microtrace::optimize::ObjectBounds;
     let mut scene = Box::new(microtrace::scene::Scene::<H, PARSE_CAPACITY>::UNPREPARED);
     scene.prepare_in_place(description, &description.objects).map_err(Ahead::Scene)?;
-    let bounds: Vec<ObjectBounds<H>> = description
-        .objects
-        .iter()
-        .map(|object| {
-            ObjectBounds::<H>::of(object).unwrap_or(ObjectBounds { primitive: object.primitive, capsule: Capsule::UNSET, shadow: ShadowBound::always() })
-        })
-        .collect();
+    let bounds: Vec<ObjectBounds<H>> = description.objects.iter().map(ObjectBounds::ahead).collect();
     let mut text = String::new();
     microtrace::scene::ahead::write_prepared_ahead(&*scene, &bounds, &mut text).map_err(Ahead::Write)?;
     out.push_str(&text);
@@ -291,26 +285,13 @@ fn render_size(text: &str) -> (u16, u16) {
 
 /// `None` keeps the scene's own `optimize` statement.
 fn optimization_override(text: Option<&str>) -> Option<Optimizations> {
-    let text = text?;
-    match text {
+    match text? {
         "scene" => None,
-        "all" => Some(Optimizations::ALL),
-        "none" => Some(Optimizations::NONE),
-        list => {
-            let mut optimizations = Optimizations::NONE;
-            for name in list.split(',') {
-                match name.trim() {
-                    "pixelbuffer" => optimizations.pixelbuffer = true,
-                    "extents" => optimizations.extents = true,
-                    "grid" => optimizations.grid = true,
-                    "sortlist" => optimizations.sortlist = true,
-                    other => fail(&format!(
-                        "MICROTRACE_OPT: unknown optimization `{other}` (expected all, none, or a list of pixelbuffer,extents,grid,sortlist)"
-                    )),
-                }
-            }
-            Some(optimizations)
-        }
+        list => Some(Optimizations::from_list(list).unwrap_or_else(|other| {
+            fail(&format!(
+                "MICROTRACE_OPT: unknown optimization `{other}` (expected all, none, or a list of pixelbuffer,extents,grid,sortlist)"
+            ))
+        })),
     }
 }
 

@@ -109,6 +109,10 @@ fn main() -> ! {
     report.integer("width", scene::WIDTH as u64);
     report.integer("height", scene::HEIGHT as u64);
     report.integer("objects", scene::OBJECT_COUNT as u64);
+    // What the grid holds and what its pool could (sized by the build: xtask's
+    // MICROTRACE_GRID_ENTRIES_PER_OBJECT).
+    report.integer("grid_entries", scene.acceleration.grid_entries() as u64);
+    report.integer("grid_capacity", microtrace::optimize::Acceleration::<scene::Number, { scene::OBJECT_COUNT }>::grid_capacity() as u64);
     report_statistics(&mut report, &statistics);
     report.integer("stack_peak_bytes", stack_peak_bytes as u64);
     report.integer("stack_size_bytes", stack_size_bytes as u64);

@@ -63,26 +63,8 @@ pub fn parse_size(text: &str) -> Result<(u16, u16), String> {
 
 /// Parses `all`, `none`, or a comma-separated list of pixelbuffer, extents, grid, sortlist.
 pub fn parse_optimizations(text: &str) -> Result<Optimizations, String> {
-    match text {
-        "all" => return Ok(Optimizations::ALL),
-        "none" => return Ok(Optimizations::NONE),
-        _ => {}
-    }
-    let mut chosen = Optimizations::NONE;
-    for word in text.split(',') {
-        match word.trim() {
-            "pixelbuffer" => chosen.pixelbuffer = true,
-            "extents" => chosen.extents = true,
-            "grid" => chosen.grid = true,
-            "sortlist" => chosen.sortlist = true,
-            other => {
-                return Err(format!(
-                    "unknown optimization `{other}`: use all, none, or any of pixelbuffer,extents,grid,sortlist"
-                ))
-            }
-        }
-    }
-    Ok(chosen)
+    Optimizations::from_list(text)
+        .map_err(|other| format!("unknown optimization `{other}`: use all, none, or any of pixelbuffer,extents,grid,sortlist"))
 }
 
 /// Parses `on` / `off`.

@@ -23,7 +23,7 @@ use microtrace::render::{render_pga, Statistics};
 use microtrace::scene::{Scene, SceneDescription};
 // The budget of firmware/README.md for the lm3s6965evb (64 KB RAM, 256 KB flash): static RAM
 // (the prepared scene with its acceleration structures: no framebuffer, no OLED copy, the rows
-// streamed) plus peak stack leaves 28 KB of the RAM free.
+// streamed) plus peak stack leaves 36 KB of the RAM free.
 use xtask::budget::{DATA_BYTES, FLASH_BYTES, FREE_RAM_BYTES, RAM_BYTES, STACK_BYTES, STATIC_RAM_BYTES};
 use xtask::firmware::{self, Board, FirmwareOptions, FirmwareRun};
 
@@ -88,6 +88,12 @@ fn firmware_matches_host(name: &str, board: Board) {
     for (key, host) in counted {
         assert_eq!(numbers[key], host, "{name} on {}: {key}, firmware against host", board.name());
     }
+    // The grid's pool is sized by what the scene's grid holds (xtask sets the build's
+    // MICROTRACE_GRID_ENTRIES_PER_OBJECT): the entries fit, with less than one spare entry per
+    // object, and a scene that asks for the grid has it (an overflow would switch it off).
+    let (entries, capacity, objects) = (numbers["grid_entries"], numbers["grid_capacity"], numbers["objects"]);
+    assert!(entries <= capacity && capacity < entries + objects, "{name} on {}: grid pool of {capacity} for {entries} entries and {objects} objects", board.name());
+    assert_eq!(entries > 0, description.optimizations.grid, "{name} on {}: the grid holds {entries} entries", board.name());
     // The count is the frame's, split at the render marker; `instructions` is the frame's too.
     let (frame, prepare, render) = (numbers["frame_instructions"], numbers["prepare_instructions"], numbers["render_instructions"]);
     assert!(prepare > 0 && render > 0, "{name} on {}: prepare {prepare}, render {render}", board.name());

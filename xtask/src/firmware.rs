@@ -8,7 +8,7 @@ use std::process::{Command, Stdio};
 use std::sync::Mutex;
 use std::time::Duration;
 
-use microtrace::scene::Primitive;
+use microtrace::scene::{Primitive, SceneDescription};
 
 use crate::elf;
 use crate::oled;
@@ -172,6 +172,9 @@ static BUILD_LOCK: Mutex<()> = Mutex::new(());
 /// check that both say the same).
 pub const FIRMWARE_SCENE_CAPACITY: usize = 512;
 
+/// The firmware's render size (`MICROTRACE_SIZE`): the OLED's.
+pub const FIRMWARE_SIZE: (u16, u16) = (128, 64);
+
 /// The number types firmware/build.rs knows.
 pub const NUMBERS: [&str; 6] = ["f64", "f32", "fixed", "fixed16", "f32-micromath", "soft32"];
 
@@ -281,13 +284,9 @@ fn check_options(options: &FirmwareOptions) -> Result<(), String> {
         return Err(format!("unknown number type `{}` (one of {})", options.number, NUMBERS.join(", ")));
     }
     let optimizations = options.optimizations.as_str();
-    if !matches!(optimizations, "scene" | "all" | "none") {
-        for name in optimizations.split(',') {
-            if !["pixelbuffer", "extents", "grid", "sortlist"].contains(&name.trim()) {
-                return Err(format!(
-                    "unknown optimization `{name}` in --opt (scene, all, none, or a list of pixelbuffer,extents,grid,sortlist)"
-                ));
-            }
+    if optimizations != "scene" {
+        if let Err(name) = microtrace::scene::Optimizations::from_list(optimizations) {
+            return Err(format!("unknown optimization `{name}` in --opt (scene, all, none, or a list of pixelbuffer,extents,grid,sortlist)"));
         }
     }
     Ok(())
@@ -296,17 +295,7 @@ fn check_options(options: &FirmwareOptions) -> Result<(), String> {
 /// The `cube`/`sphere`/`cylinder`/`cone` features the scene needs, and `ray-tree` when its
 /// objects reflect or transmit (the firmware models only those), parsing it with the same parser as the firmware's build script.
 fn primitive_features(scene: &Path) -> Result<Vec<&'static str>, String> {
-    let text = std::fs::read(scene).map_err(|error| format!("scene {}: {error}", scene.display()))?;
-    let description = microtrace::parser::parse::<FIRMWARE_SCENE_CAPACITY>(&text).map_err(|error| {
-        // The one format of scene errors (docs/bad-input.md): `FILE:line N: reason`.
-        let message = if error.line == 0 { format!("{}: {error}", scene.display()) } else { format!("{}:{error}", scene.display()) };
-        match error.kind {
-            microtrace::parser::SceneErrorKind::TooManyObjects { .. } => format!(
-                "{message} objects at build time (PARSE_CAPACITY in firmware/build.rs); no board this firmware runs on has the RAM for so many"
-            ),
-            _ => message,
-        }
-    })?;
+    let description = parse_scene(scene)?;
     let mut features: Vec<&'static str> = Primitive::ALL
         .into_iter()
         .filter(|primitive| description.objects.iter().any(|object| object.primitive == *primitive))
@@ -317,6 +306,22 @@ fn primitive_features(scene: &Path) -> Result<Vec<&'static str>, String> {
         features.push("ray-tree");
     }
     Ok(features)
+}
+
+/// The scene parsed with the same parser and capacity as the firmware's build script, its
+/// errors in the one format of scene errors (docs/bad-input.md): `FILE:line N: reason`.
+fn parse_scene(scene: &Path) -> Result<Box<SceneDescription<FIRMWARE_SCENE_CAPACITY>>, String> {
+    let text = std::fs::read(scene).map_err(|error| format!("scene {}: {error}", scene.display()))?;
+    let description = microtrace::parser::parse::<FIRMWARE_SCENE_CAPACITY>(&text).map_err(|error| {
+        let message = if error.line == 0 { format!("{}: {error}", scene.display()) } else { format!("{}:{error}", scene.display()) };
+        match error.kind {
+            microtrace::parser::SceneErrorKind::TooManyObjects { .. } => format!(
+                "{message} objects at build time (PARSE_CAPACITY in firmware/build.rs); no board this firmware runs on has the RAM for so many"
+            ),
+            _ => message,
+        }
+    })?;
+    Ok(Box::new(description))
 }
 
 /// The firmware feature a number type needs (see `number_type` in firmware/build.rs).
@@ -352,6 +357,12 @@ fn build(options: &FirmwareOptions, scene: &Path, primitive_features: &[&str]) -
     if options.framebuffer {
         features.push("framebuffer");
     }
+    // The grid's pool sized by what the scene's grid holds at the firmware's size (a scene that
+    // does not parse is left to the build script, which says why).
+    let grid_entries = match parse_scene(scene) {
+        Ok(description) => crate::grid_pool::entries_per_object(&description, &options.number, &options.optimizations, FIRMWARE_SIZE)?.to_string(),
+        Err(_) => String::new(),
+    };
     let output = Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
         .args(["build", "--release", "--quiet", "--no-default-features"])
         .args(["--features", &features.join(",")])
@@ -367,7 +378,8 @@ fn build(options: &FirmwareOptions, scene: &Path, primitive_features: &[&str]) -
         .env("MICROTRACE_SCENE", scene)
         .env("MICROTRACE_NUMBER", &options.number)
         .env("MICROTRACE_OPT", &options.optimizations)
-        .env("MICROTRACE_SIZE", "128x64")
+        .env("MICROTRACE_SIZE", format!("{}x{}", FIRMWARE_SIZE.0, FIRMWARE_SIZE.1))
+        .env("MICROTRACE_GRID_ENTRIES_PER_OBJECT", grid_entries)
         .env("MICROTRACE_FAULT_TEST", if options.provoke.is_some() { "1" } else { "0" })
         .env("MICROTRACE_STACK_RESERVE", options.stack_reserve.map(|bytes| bytes.to_string()).unwrap_or_default())
         .stdin(Stdio::null())

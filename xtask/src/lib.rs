@@ -10,6 +10,7 @@ pub mod budget;
 pub mod elf;
 pub mod example;
 pub mod firmware;
+pub mod grid_pool;
 pub mod oled;
 pub mod qemu;
 pub mod report;

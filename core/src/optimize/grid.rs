@@ -26,9 +26,32 @@ use super::projection::{Projected, Screen};
 pub const GRID_SIZE: u16 = 20;
 /// No cells at all without the `acceleration-tables` feature (the grid is then inactive).
 const CELLS: usize = if super::TABLES { GRID_SIZE as usize * GRID_SIZE as usize } else { 0 };
-/// Pool entries per object: an object may overlap this many cells on average.
-/// Zero without the `acceleration-tables` feature: the grid is then always inactive.
-pub const POOL_PER_OBJECT: usize = if cfg!(feature = "acceleration-tables") { 24 } else { 0 };
+/// Pool entries per object: an object may overlap this many cells on average (24), or what
+/// the build's `MICROTRACE_GRID_ENTRIES_PER_OBJECT` says: the firmware's xtask sets it to the
+/// entries the scene's grid holds at its view, divided by its objects and rounded up, so that
+/// the pool is sized by the scene, not by a per-object worst case (a view that needs more
+/// switches the grid off: slower, never a different image). Zero without the
+/// `acceleration-tables` feature: the grid is then always inactive.
+pub const POOL_PER_OBJECT: usize = if cfg!(feature = "acceleration-tables") {
+    match option_env!("MICROTRACE_GRID_ENTRIES_PER_OBJECT") {
+        Some(text) if !text.is_empty() => decimal(text),
+        _ => 24,
+    }
+} else {
+    0
+};
+
+/// A decimal number at compile time (a bad one stops the build, naming the variable).
+const fn decimal(text: &str) -> usize {
+    let mut value = 0usize;
+    let mut rest = text.as_bytes();
+    while let [digit, tail @ ..] = rest {
+        assert!(digit.is_ascii_digit() && value < 10_000, "MICROTRACE_GRID_ENTRIES_PER_OBJECT: expected a number of entries below 10000, e.g. 9");
+        value = value * 10 + (*digit - b'0') as usize;
+        rest = tail;
+    }
+    value
+}
 
 /// What an entry knows of its object within the cell.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

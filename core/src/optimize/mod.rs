@@ -366,6 +366,11 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
         self.grid.entries()
     }
 
+    /// The entries the grid's pool holds ([`grid::POOL_PER_OBJECT`] per object).
+    pub const fn grid_capacity() -> usize {
+        grid::POOL_PER_OBJECT * MAX_OBJECTS
+    }
+
     /// Sortlist's lower bound of `t` for the object, as the render uses it (`None`: none known,
     /// or Sortlist off).
     pub fn near_bound(&self, object: usize) -> Option<N> {
@@ -402,6 +407,12 @@ impl<N: Number> ObjectBounds<N> {
     /// For each object of the descriptions (`None` for a singular transform).
     pub fn of(description: &ObjectDescription) -> Option<Self> {
         rendered_geometry::<N>(description).map(|geometry| Self::of_geometry(&geometry))
+    }
+
+    /// [`ObjectBounds::of`], or no bounds at all (the object tested everywhere) for a singular
+    /// transform: what the firmware's build prepares ahead.
+    pub fn ahead(description: &ObjectDescription) -> Self {
+        Self::of(description).unwrap_or(Self { primitive: description.primitive, capsule: Capsule::UNSET, shadow: ShadowBound::always() })
     }
 }
 

@@ -94,6 +94,28 @@ impl Optimizations {
     pub const ALL: Self = Self { pixelbuffer: true, extents: true, grid: true, sortlist: true };
     pub const NONE: Self = Self { pixelbuffer: false, extents: false, grid: false, sortlist: false };
 
+    /// `all`, `none`, or a comma-separated list of `pixelbuffer`, `extents`, `grid` and
+    /// `sortlist` (the command line's `--opt` and the firmware build's `MICROTRACE_OPT`);
+    /// `Err` holds the first unknown name.
+    pub fn from_list(text: &str) -> Result<Self, &str> {
+        match text {
+            "all" => return Ok(Self::ALL),
+            "none" => return Ok(Self::NONE),
+            _ => {}
+        }
+        let mut chosen = Self::NONE;
+        for word in text.split(',') {
+            match word.trim() {
+                "pixelbuffer" => chosen.pixelbuffer = true,
+                "extents" => chosen.extents = true,
+                "grid" => chosen.grid = true,
+                "sortlist" => chosen.sortlist = true,
+                other => return Err(other),
+            }
+        }
+        Ok(chosen)
+    }
+
     /// All 16 combinations, `NONE` first.
     pub fn combinations() -> impl Iterator<Item = Self> {
         (0u8..16).map(|bits| Self {
