@@ -34,9 +34,6 @@ use microtrace::scene::{Optimizations, Primitive, SceneDescription};
 /// Objects a scene file may hold at build time; the firmware itself is sized by the scene.
 const PARSE_CAPACITY: usize = 512;
 
-/// The stack the RAM check keeps free by default: the memory budget's peak stack, 12 KB
-/// (firmware/README.md; the deepest measured, the lattice in f64 on the mps2-an386, is 11,060).
-const DEFAULT_STACK_RESERVE: u32 = 12 * 1024;
 
 fn main() {
     let manifest_dir = PathBuf::from(env("CARGO_MANIFEST_DIR").unwrap());
@@ -80,12 +77,16 @@ fn main() {
 
     let mut source = generate(&description, &scene_path, number, &number_name, board);
     memory.write(&mut source);
-    let reserve = env("MICROTRACE_STACK_RESERVE").map_or(Ok(DEFAULT_STACK_RESERVE), |text| text.parse::<u32>());
-    let Ok(reserve) = reserve else {
-        fail("MICROTRACE_STACK_RESERVE: expected a number of bytes, e.g. 12288")
+    let reserve = match env("MICROTRACE_STACK_RESERVE") {
+        None => "None".to_owned(),
+        Some(text) => match text.parse::<u32>() {
+            Ok(bytes) => format!("Some({bytes})"),
+            Err(_) => fail("MICROTRACE_STACK_RESERVE: expected a number of bytes, e.g. 12288"),
+        },
     };
-    writeln!(source, "/// The stack the RAM check keeps free (`MICROTRACE_STACK_RESERVE`, src/ram.rs).").unwrap();
-    writeln!(source, "pub const STACK_RESERVE_BYTES: usize = {reserve};").unwrap();
+    writeln!(source, "/// The stack the RAM check keeps free when `MICROTRACE_STACK_RESERVE` says (src/ram.rs; `None`: the").unwrap();
+    writeln!(source, "/// default, which grows with the objects).").unwrap();
+    writeln!(source, "pub const STACK_RESERVE_BYTES: Option<usize> = {reserve};").unwrap();
     // The scene prepared ahead in the number type: what the chip starts from (no f64 there).
     let vsqrt = number.contains("VsqrtF32");
     let written = match number_name.as_str() {
@@ -352,6 +353,7 @@ fn generate<const N: usize>(
     writeln!(out, "pub const HEIGHT: u16 = {};", v.height()).unwrap();
     writeln!(out, "pub const PIXEL_COUNT: usize = {};", v.pixel_count()).unwrap();
     writeln!(out, "pub const OBJECT_COUNT: usize = {};", d.objects.len()).unwrap();
+    writeln!(out, "pub const LIGHT_COUNT: usize = {};", 1 + d.more_lights.len()).unwrap();
     // The ray tree's explicit stack holds this many nodes: the scene's `depth`, or one (the
     // primary hit) when no object spawns rays.
     let tree_depth = if d.objects.iter().any(|object| object.material.spawns_rays()) { d.depth } else { 1 };

@@ -44,15 +44,28 @@ use display::FramebufferAndDisplay;
 use display::StreamedRows;
 use semihosting::{print, HostFile};
 
-/// Sized by the scene: exactly its objects.
-type PreparedScene = Scene<scene::Number, { scene::OBJECT_COUNT }>;
+/// Sized by the scene: exactly its objects, which stay in flash.
+type PreparedScene = Scene<scene::Number, { scene::OBJECT_COUNT }, FlashObjects>;
+
+/// The scene's objects in flash, where the build put them prepared ahead (`OBJECTS_AHEAD`):
+/// they take no RAM (only each object's eye, which depends on the view, is in the scene).
+#[derive(Clone, Copy, Debug)]
+struct FlashObjects;
+
+impl core::ops::Deref for FlashObjects {
+    type Target = [microtrace::scene::Object<scene::Number>];
+
+    fn deref(&self) -> &Self::Target {
+        &scene::OBJECTS_AHEAD
+    }
+}
 
 #[entry]
 fn main() -> ! {
     // The prepared scene (objects, acceleration structures) is static RAM, zero-initialised
     // and prepared in place: returned by value it would pass through the stack. (cortex-m-rt
     // makes an entry's `static mut` a `&'static mut`.)
-    static mut SCENE: PreparedScene = PreparedScene::UNPREPARED;
+    static mut SCENE: PreparedScene = PreparedScene::unprepared(FlashObjects);
     // From here on an access outside the flash, the RAM and the peripherals faults, and so does
     // the stack running off the bottom of RAM (src/fault.rs).
     fault::protect_memory();
@@ -160,7 +173,7 @@ type Passes = PassStatistics;
 #[inline(never)]
 #[cfg(not(any(feature = "framebuffer", feature = "progressive")))]
 fn render<S: PixelSink<u8>>(scene: &PreparedScene, sink: &mut S, statistics: &mut Passes) {
-    render_pga_streamed_sized::<scene::Number, S, { scene::OBJECT_COUNT }, { scene::TREE_DEPTH }, { scene::ANTIALIAS_ROW }>(scene, sink, statistics);
+    render_pga_streamed_sized::<scene::Number, S, { scene::OBJECT_COUNT }, FlashObjects, { scene::TREE_DEPTH }, { scene::ANTIALIAS_ROW }>(scene, sink, statistics);
 }
 
 /// The framebuffer render (the `framebuffer` feature): Pixelbuffer's fill marked in the
@@ -168,7 +181,7 @@ fn render<S: PixelSink<u8>>(scene: &PreparedScene, sink: &mut S, statistics: &mu
 #[inline(never)]
 #[cfg(all(feature = "framebuffer", not(feature = "progressive")))]
 fn render<S: PixelSink<u8> + PixelSource<u8>>(scene: &PreparedScene, sink: &mut S, statistics: &mut Passes) {
-    render_pga_sized::<scene::Number, S, { scene::OBJECT_COUNT }, { scene::TREE_DEPTH }, { scene::ANTIALIAS_ROW }>(scene, sink, statistics);
+    render_pga_sized::<scene::Number, S, { scene::OBJECT_COUNT }, FlashObjects, { scene::TREE_DEPTH }, { scene::ANTIALIAS_ROW }>(scene, sink, statistics);
 }
 
 /// The progressive render (the `progressive` feature): coarse to fine, each pass straight into

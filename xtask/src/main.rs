@@ -16,7 +16,8 @@ fn usage() -> &'static str {
       leaves framebuffer.bin, oled.png (lm3s6965evb) and report.json in DIR
       (default firmware/target/run/BOARD-SCENE-NUMBER). --provoke builds the fault test, which
       does that before preparing the scene: the run fails with the firmware's message.
-      --stack-reserve: the stack the build's RAM check keeps free (default 12288).
+      --stack-reserve: the stack the build's RAM check keeps free (default: 4 KB plus the
+                       render's shadow tables per object, at least 12288; firmware/src/ram.rs).
       --progressive renders coarse to fine (8x8 blocks, then 4x4, 2x2, every pixel): the same
       image, the rays of each pass reported. --framebuffer builds the framebuffer render (the
       picture in an 8 KB RAM framebuffer) instead of the streamed one (rows sent as they are done).

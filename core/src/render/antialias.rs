@@ -26,7 +26,7 @@ use super::trace::{primary_surface_then, Mode};
 use super::Statistics;
 use crate::number::Number;
 use crate::pixel::PixelSink;
-use crate::scene::{PreparedAntialias, Scene};
+use crate::scene::{Objects, PreparedAntialias, Scene};
 
 type Rgb = [u8; 3];
 
@@ -51,13 +51,13 @@ fn differ(corners: &[Rgb; 4], threshold: u8) -> bool {
 }
 
 /// Traces one sample of the grid and returns its colour.
-struct Sampler<'a, 'c, N, M, const MAX_OBJECTS: usize, const DEPTH: usize> {
-    scene: &'a Scene<N, MAX_OBJECTS>,
+struct Sampler<'a, 'c, N, M, const MAX_OBJECTS: usize, O, const DEPTH: usize> {
+    scene: &'a Scene<N, MAX_OBJECTS, O>,
     mode: &'a M,
     culling: &'a [ShadowCulling<'c, N>],
 }
 
-impl<N: Number, M: Mode<N>, const MAX_OBJECTS: usize, const DEPTH: usize> Sampler<'_, '_, N, M, MAX_OBJECTS, DEPTH> {
+impl<N: Number, M: Mode<N>, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize> Sampler<'_, '_, N, M, MAX_OBJECTS, O, DEPTH> {
     fn sample(&self, x: u16, y: u16, statistics: &mut Statistics, cache: &mut ShadowCache) -> Rgb {
         let pixel = self.scene.camera.pixel(x, y);
         let surface = primary_surface_then(self.scene, pixel, statistics, cache, self.culling, |at, material, lighting, statistics, cache| {
@@ -65,7 +65,7 @@ impl<N: Number, M: Mode<N>, const MAX_OBJECTS: usize, const DEPTH: usize> Sample
             #[cfg(feature = "ray-tree")]
             if self.scene.has_ray_tree() {
                 let context = super::ray_tree::TreeContext { scene: self.scene, colours: self.mode, pixel, culling: self.culling };
-                if let Some(mixed) = super::ray_tree::trace_tree::<N, M, MAX_OBJECTS, DEPTH>(&context, *at, local, statistics, cache) {
+                if let Some(mixed) = super::ray_tree::trace_tree::<N, M, MAX_OBJECTS, O, DEPTH>(&context, *at, local, statistics, cache) {
                     return mixed;
                 }
             }
@@ -77,15 +77,15 @@ impl<N: Number, M: Mode<N>, const MAX_OBJECTS: usize, const DEPTH: usize> Sample
     }
 }
 
-fn to_rgb<N: Number, const MAX_OBJECTS: usize>(colour: [N; 3], scene: &Scene<N, MAX_OBJECTS>) -> Rgb {
+fn to_rgb<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(colour: [N; 3], scene: &Scene<N, MAX_OBJECTS, O>) -> Rgb {
     colour.map(|channel| (channel + scene.constants.half).floor_to_i32().clamp(0, 255) as u8)
 }
 
 /// Renders the image rows `rows` of an antialiased scene into `sink`, the pixels in the mode's
 /// values (`Mode::averaged`).
 #[allow(clippy::too_many_arguments)]
-pub(crate) fn render_antialiased<N, P, S, M, const MAX_OBJECTS: usize, const DEPTH: usize, const ROW: usize>(
-    scene: &Scene<N, MAX_OBJECTS>,
+pub(crate) fn render_antialiased<N, P, S, M, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize, const ROW: usize>(
+    scene: &Scene<N, MAX_OBJECTS, O>,
     antialias: PreparedAntialias,
     sink: &mut S,
     statistics: &mut Statistics,
@@ -98,7 +98,7 @@ pub(crate) fn render_antialiased<N, P, S, M, const MAX_OBJECTS: usize, const DEP
     S: PixelSink<P>,
     M: Mode<N, Pixel = P>,
 {
-    let sampler = Sampler::<N, M, MAX_OBJECTS, DEPTH> { scene, mode, culling };
+    let sampler = Sampler::<N, M, MAX_OBJECTS, O, DEPTH> { scene, mode, culling };
     let (width, height) = (antialias.image.width(), antialias.image.height());
     let step = antialias.step();
     let rows = rows.start..rows.end.min(height);
@@ -149,8 +149,8 @@ pub(crate) fn render_antialiased<N, P, S, M, const MAX_OBJECTS: usize, const DEP
 }
 
 /// The area-weighted mean of one pixel, subdividing where its corners differ.
-fn pixel_mean<N: Number, M: Mode<N>, const MAX_OBJECTS: usize, const DEPTH: usize>(
-    sampler: &Sampler<'_, '_, N, M, MAX_OBJECTS, DEPTH>,
+fn pixel_mean<N: Number, M: Mode<N>, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize>(
+    sampler: &Sampler<'_, '_, N, M, MAX_OBJECTS, O, DEPTH>,
     pixel: Square,
     antialias: PreparedAntialias,
     statistics: &mut Statistics,

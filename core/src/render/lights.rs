@@ -9,15 +9,15 @@ use super::shadow::{light_share, ShadowCache, ShadowCulling};
 use super::Statistics;
 use crate::geometry::Vector3;
 use crate::number::Number;
-use crate::scene::{PreparedLight, Scene};
+use crate::scene::{Objects, PreparedLight, Scene};
 use crate::shading::{lighting, Lighting};
 
 /// The lighting at `point` on object `object` with the unit `normal` facing the incoming ray
 /// `view`; `start` is where shadow rays leave (the point moved off the surface).
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
-pub(crate) fn direct_lighting<N: Number, const MAX_OBJECTS: usize>(
-    scene: &Scene<N, MAX_OBJECTS>,
+pub(crate) fn direct_lighting<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
+    scene: &Scene<N, MAX_OBJECTS, O>,
     object: usize,
     point: Vector3<N>,
     normal: Vector3<N>,
@@ -41,8 +41,8 @@ fn scaled<N: Number>(lighting: Lighting<N>, factor: N) -> Lighting<N> {
 }
 
 /// What every light's term at one hit shares.
-struct Hit<'a, N, const MAX_OBJECTS: usize> {
-    scene: &'a Scene<N, MAX_OBJECTS>,
+struct Hit<'a, N, const MAX_OBJECTS: usize, O> {
+    scene: &'a Scene<N, MAX_OBJECTS, O>,
     object: usize,
     point: Vector3<N>,
     normal: Vector3<N>,
@@ -50,7 +50,7 @@ struct Hit<'a, N, const MAX_OBJECTS: usize> {
     power: u32,
 }
 
-impl<N: Number, const MAX_OBJECTS: usize> Hit<'_, N, MAX_OBJECTS> {
+impl<N: Number, const MAX_OBJECTS: usize, O: Objects<N>> Hit<'_, N, MAX_OBJECTS, O> {
     /// The first light's term scaled by its intensity plus the further lights' terms: out of
     /// line, so that a one-light scene's pixels carry none of it.
     #[inline(never)]

@@ -12,7 +12,7 @@ use crate::camera::PixelPosition;
 use crate::geometry::{Ray, Vector3};
 use crate::number::Number;
 use crate::optimize::grid::entry_covers;
-use crate::scene::{Object, Scene};
+use crate::scene::{Object, Objects, Scene};
 use crate::shapes::Interval;
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -23,21 +23,20 @@ pub struct NearestHit<N> {
     pub local_normal: Vector3<N>,
 }
 
-/// The primary ray `ray` in the object's space: for a perspective view from the eye in object
-/// space prepared with the scene (the same bits as `object_from_world.ray(ray)`, one transform
-/// fewer per test).
+/// The primary ray `ray` in the object's space: for a perspective view from `eye`, the eye in
+/// object space prepared with the scene ([`Scene::eyes`]; the same bits as
+/// `object_from_world.ray(ray)`, one transform fewer per test).
 #[inline(always)]
-fn local_ray<N: Number>(object: &Object<N>, ray: &Ray<N>, from_eye: bool) -> Ray<N> {
-    if from_eye {
-        Ray { origin: object.eye, direction: object.object_from_world.vector(ray.direction) }
-    } else {
-        object.object_from_world.ray(ray)
+fn local_ray<N: Number>(object: &Object<N>, eye: Option<&Vector3<N>>, ray: &Ray<N>) -> Ray<N> {
+    match eye {
+        Some(eye) => Ray { origin: *eye, direction: object.object_from_world.vector(ray.direction) },
+        None => object.object_from_world.ray(ray),
     }
 }
 
 /// The nearest hit of a primary ray (one from `scene.camera.primary_ray`).
-pub fn nearest_hit<N: Number, const MAX_OBJECTS: usize>(
-    scene: &Scene<N, MAX_OBJECTS>,
+pub fn nearest_hit<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
+    scene: &Scene<N, MAX_OBJECTS, O>,
     ray: &Ray<N>,
     pixel: PixelPosition,
     statistics: &mut Statistics,
@@ -50,8 +49,8 @@ pub fn nearest_hit<N: Number, const MAX_OBJECTS: usize>(
 /// result: ties go by object number, and Sortlist's exit only skips objects whose bound lies
 /// beyond the nearest hit. Always inline: out of line, its hit returns through memory.
 #[inline(always)]
-pub fn nearest_hit_cached<N: Number, const MAX_OBJECTS: usize>(
-    scene: &Scene<N, MAX_OBJECTS>,
+pub fn nearest_hit_cached<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
+    scene: &Scene<N, MAX_OBJECTS, O>,
     ray: &Ray<N>,
     pixel: PixelPosition,
     statistics: &mut Statistics,
@@ -65,7 +64,7 @@ pub fn nearest_hit_cached<N: Number, const MAX_OBJECTS: usize>(
         // Tested unbounded, before anything else: its result is final, so the loop skips it.
         if let Some(object) = scene.objects.get(index) {
             statistics.ro_tests += 1;
-            if let Some(hit) = object.primitive.intersect(&local_ray(object, ray, from_eye), Interval::unbounded()) {
+            if let Some(hit) = object.primitive.intersect(&local_ray(object, scene.eyes.get(index).filter(|_| from_eye), ray), Interval::unbounded()) {
                 statistics.ro_hits += 1;
                 nearest = Some(NearestHit { object: index, t: hit.t, local_normal: hit.normal });
             }
@@ -75,8 +74,8 @@ pub fn nearest_hit_cached<N: Number, const MAX_OBJECTS: usize>(
     // sites: a call per candidate cost more than the extent checks it makes.
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
-    fn test<N: Number, const MAX_OBJECTS: usize>(
-        scene: &Scene<N, MAX_OBJECTS>,
+    fn test<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
+        scene: &Scene<N, MAX_OBJECTS, O>,
         ray: &Ray<N>,
         pixel: PixelPosition,
         from_eye: bool,
@@ -104,7 +103,7 @@ pub fn nearest_hit_cached<N: Number, const MAX_OBJECTS: usize>(
         };
         let Some(object) = scene.objects.get(index) else { return true };
         statistics.ro_tests += 1;
-        if let Some(hit) = object.primitive.intersect(&local_ray(object, ray, from_eye), interval) {
+        if let Some(hit) = object.primitive.intersect(&local_ray(object, scene.eyes.get(index).filter(|_| from_eye), ray), interval) {
             statistics.ro_hits += 1;
             *nearest = Some(NearestHit { object: index, t: hit.t, local_normal: hit.normal });
         }

@@ -28,7 +28,7 @@ use super::trace::{pixel_value, with_shadow_culling, Mode, PgaNodes, RgbNodes, A
 use super::{fill_volumes_rows, ShadowCulling, Statistics};
 use crate::number::Number;
 use crate::pixel::{PixelSink, Rgb888};
-use crate::scene::{Scene, MAX_DEPTH};
+use crate::scene::{Objects, Scene, MAX_DEPTH};
 
 /// How many passes a progressive render makes.
 pub const PASSES: usize = 4;
@@ -55,7 +55,7 @@ impl PassStatistics {
 
 /// Renders the scene in PGA mode progressively (see the module's documentation), adding each
 /// pass's counts to `statistics.passes`. The final image equals [`super::render_pga`]'s.
-pub fn render_pga_progressive<N, S, const MAX_OBJECTS: usize>(scene: &Scene<N, MAX_OBJECTS>, sink: &mut S, statistics: &mut PassStatistics)
+pub fn render_pga_progressive<N, S, const MAX_OBJECTS: usize, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, statistics: &mut PassStatistics)
 where
     N: Number,
     S: PixelSink<u8>,
@@ -69,7 +69,7 @@ where
 }
 
 /// Renders the scene in RGB mode progressively; the final image equals [`super::render_rgb`]'s.
-pub fn render_rgb_progressive<N, S, const MAX_OBJECTS: usize>(scene: &Scene<N, MAX_OBJECTS>, sink: &mut S, statistics: &mut PassStatistics)
+pub fn render_rgb_progressive<N, S, const MAX_OBJECTS: usize, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, statistics: &mut PassStatistics)
 where
     N: Number,
     S: PixelSink<Rgb888>,
@@ -85,7 +85,7 @@ where
 /// Pass `pass` (0..[`PASSES`]) of [`render_pga_progressive`] alone, for a caller that does
 /// something between passes: run 0, 1, 2, 3 in turn for the whole render. A pass beyond the last
 /// does nothing.
-pub fn render_pga_pass<N, S, const MAX_OBJECTS: usize>(scene: &Scene<N, MAX_OBJECTS>, sink: &mut S, pass: usize, statistics: &mut Statistics)
+pub fn render_pga_pass<N, S, const MAX_OBJECTS: usize, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, pass: usize, statistics: &mut Statistics)
 where
     N: Number,
     S: PixelSink<u8>,
@@ -96,7 +96,7 @@ where
 }
 
 /// Pass `pass` of [`render_rgb_progressive`] alone (see [`render_pga_pass`]).
-pub fn render_rgb_pass<N, S, const MAX_OBJECTS: usize>(scene: &Scene<N, MAX_OBJECTS>, sink: &mut S, pass: usize, statistics: &mut Statistics)
+pub fn render_rgb_pass<N, S, const MAX_OBJECTS: usize, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, pass: usize, statistics: &mut Statistics)
 where
     N: Number,
     S: PixelSink<Rgb888>,
@@ -115,8 +115,8 @@ pub fn traced_in_pass(pass: usize, column: u16, row: u16) -> bool {
 }
 
 #[allow(clippy::too_many_arguments)]
-fn trace_pass<N, P, S, M, const MAX_OBJECTS: usize>(
-    scene: &Scene<N, MAX_OBJECTS>,
+fn trace_pass<N, P, S, M, const MAX_OBJECTS: usize, O: Objects<N>>(
+    scene: &Scene<N, MAX_OBJECTS, O>,
     sink: &mut S,
     statistics: &mut Statistics,
     pass: usize,
@@ -134,7 +134,7 @@ fn trace_pass<N, P, S, M, const MAX_OBJECTS: usize>(
     // An antialiased image has no coarse passes: its last pass renders it whole.
     if let Some(antialias) = scene.antialias {
         if size == 1 {
-            render_antialiased::<N, P, S, M, MAX_OBJECTS, { MAX_DEPTH as usize }, ANTIALIAS_ROW>(scene, antialias, sink, statistics, 0..antialias.image.height(), mode, culling);
+            render_antialiased::<N, P, S, M, MAX_OBJECTS, O, { MAX_DEPTH as usize }, ANTIALIAS_ROW>(scene, antialias, sink, statistics, 0..antialias.image.height(), mode, culling);
         }
         return;
     }
@@ -156,7 +156,7 @@ fn trace_pass<N, P, S, M, const MAX_OBJECTS: usize>(
                 background
             } else {
                 let pixel = camera.pixel(column, row);
-                pixel_value::<N, M, MAX_OBJECTS, { MAX_DEPTH as usize }>(scene, mode, pixel, statistics, cache, culling).unwrap_or(background)
+                pixel_value::<N, M, MAX_OBJECTS, O, { MAX_DEPTH as usize }>(scene, mode, pixel, statistics, cache, culling).unwrap_or(background)
             };
             if size == 1 {
                 sink.set_pixel(column, row, value);
@@ -189,7 +189,7 @@ impl<const MAX_OBJECTS: usize> RowCoverage<MAX_OBJECTS> {
         Self { spans: [(0, 0); MAX_OBJECTS], count: 0, overflowed: false }
     }
 
-    pub(crate) fn of<N: Number>(scene: &Scene<N, MAX_OBJECTS>, row: u16) -> Self {
+    pub(crate) fn of<N: Number, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, row: u16) -> Self {
         let mut coverage = Self::empty();
         fill_volumes_rows(scene, &mut coverage, true, false, row..row.saturating_add(1));
         coverage

@@ -23,7 +23,7 @@ use crate::camera::PixelPosition;
 use crate::geometry::reflection::{reflected, refracted};
 use crate::geometry::{Ray, Vector3};
 use crate::number::Number;
-use crate::scene::{Optics, Scene};
+use crate::scene::{Objects, Optics, Scene};
 
 /// One node of the tree on the stack.
 #[derive(Clone, Copy, Debug)]
@@ -46,8 +46,8 @@ enum Branch {
 }
 
 /// What the walk needs besides the stack.
-pub(crate) struct TreeContext<'a, 'c, N, C, const MAX_OBJECTS: usize> {
-    pub scene: &'a Scene<N, MAX_OBJECTS>,
+pub(crate) struct TreeContext<'a, 'c, N, C, const MAX_OBJECTS: usize, O> {
+    pub scene: &'a Scene<N, MAX_OBJECTS, O>,
     pub colours: &'a C,
     pub pixel: PixelPosition,
     pub culling: &'a [ShadowCulling<'c, N>],
@@ -56,8 +56,8 @@ pub(crate) struct TreeContext<'a, 'c, N, C, const MAX_OBJECTS: usize> {
 /// The colour of the tree below the primary hit `root` (whose local term is `local`), or
 /// `None` when no secondary ray was spawned (the pixel is then the primary hit alone).
 #[inline(never)]
-pub(crate) fn trace_tree<N: Number, C: NodeColours<N>, const MAX_OBJECTS: usize, const DEPTH: usize>(
-    context: &TreeContext<'_, '_, N, C, MAX_OBJECTS>,
+pub(crate) fn trace_tree<N: Number, C: NodeColours<N>, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize>(
+    context: &TreeContext<'_, '_, N, C, MAX_OBJECTS, O>,
     root: SurfacePoint<N>,
     local: [N; 3],
     statistics: &mut Statistics,
@@ -138,8 +138,8 @@ pub(crate) fn trace_tree<N: Number, C: NodeColours<N>, const MAX_OBJECTS: usize,
 }
 
 /// The surface point a secondary ray hit and its local colour.
-fn surface<N: Number, C: NodeColours<N>, const MAX_OBJECTS: usize>(
-    context: &TreeContext<'_, '_, N, C, MAX_OBJECTS>,
+fn surface<N: Number, C: NodeColours<N>, const MAX_OBJECTS: usize, O: Objects<N>>(
+    context: &TreeContext<'_, '_, N, C, MAX_OBJECTS, O>,
     ray: &Ray<N>,
     object: usize,
     t: N,

@@ -16,7 +16,7 @@ use super::Statistics;
 use crate::geometry::{Ray, Vector3};
 use crate::number::Number;
 use crate::optimize::shadow::{BlockerSet, DirectionChord, QuantizedDirection};
-use crate::scene::{Scene, MAX_LIGHTS};
+use crate::scene::{Objects, Scene, MAX_LIGHTS};
 #[cfg(test)]
 use crate::scene::PreparedLight;
 use crate::shapes::Interval;
@@ -48,8 +48,8 @@ pub struct ShadowCache {
     pub more_blockers: [Option<u16>; MAX_LIGHTS - 1],
 }
 
-pub fn in_shadow<N: Number, const MAX_OBJECTS: usize>(
-    scene: &Scene<N, MAX_OBJECTS>,
+pub fn in_shadow<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
+    scene: &Scene<N, MAX_OBJECTS, O>,
     shaded_object: usize,
     point: Vector3<N>,
     to_light: Vector3<N>,
@@ -59,8 +59,8 @@ pub fn in_shadow<N: Number, const MAX_OBJECTS: usize>(
     in_shadow_cached(scene, shaded_object, point, to_light, light_distance, statistics, &mut ShadowCache::default())
 }
 
-pub fn in_shadow_cached<N: Number, const MAX_OBJECTS: usize>(
-    scene: &Scene<N, MAX_OBJECTS>,
+pub fn in_shadow_cached<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
+    scene: &Scene<N, MAX_OBJECTS, O>,
     shaded_object: usize,
     point: Vector3<N>,
     to_light: Vector3<N>,
@@ -95,8 +95,8 @@ impl<N> Default for ShadowCulling<'_, N> {
 /// [`in_shadow_cached`] with, for a point light, each object's cone of directions from the light
 /// (`ShadowBound::light_cone`, indexed by object; empty: none), checked before its capsule.
 #[allow(clippy::too_many_arguments)]
-pub fn in_shadow_culled<N: Number, const MAX_OBJECTS: usize>(
-    scene: &Scene<N, MAX_OBJECTS>,
+pub fn in_shadow_culled<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
+    scene: &Scene<N, MAX_OBJECTS, O>,
     shaded_object: usize,
     point: Vector3<N>,
     to_light: Vector3<N>,
@@ -114,8 +114,8 @@ pub fn in_shadow_culled<N: Number, const MAX_OBJECTS: usize>(
 /// a scene without transparent objects, [`in_shadow_culled`]'s yes or no.
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
-pub(crate) fn light_share<N: Number, const MAX_OBJECTS: usize>(
-    scene: &Scene<N, MAX_OBJECTS>,
+pub(crate) fn light_share<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
+    scene: &Scene<N, MAX_OBJECTS, O>,
     shaded_object: usize,
     point: Vector3<N>,
     to_light: Vector3<N>,
@@ -134,8 +134,8 @@ pub(crate) fn light_share<N: Number, const MAX_OBJECTS: usize>(
 /// [`light_share`] with transparent objects: every candidate is tested (an opaque blocker
 /// ends the loop), in object order, so the product is the same whatever the optimizations.
 #[cfg(feature = "ray-tree")]
-fn transmitted<N: Number, const MAX_OBJECTS: usize>(
-    scene: &Scene<N, MAX_OBJECTS>,
+fn transmitted<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
+    scene: &Scene<N, MAX_OBJECTS, O>,
     shaded_object: usize,
     point: Vector3<N>,
     to_light: Vector3<N>,
@@ -174,8 +174,8 @@ fn transmitted<N: Number, const MAX_OBJECTS: usize>(
 /// `last_blocker` (the light's shadow cache, tried first and updated).
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
-fn blocked<N: Number, const MAX_OBJECTS: usize>(
-    scene: &Scene<N, MAX_OBJECTS>,
+fn blocked<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
+    scene: &Scene<N, MAX_OBJECTS, O>,
     shaded_object: usize,
     point: Vector3<N>,
     to_light: Vector3<N>,
@@ -234,8 +234,8 @@ fn blocked<N: Number, const MAX_OBJECTS: usize>(
 /// multiplications and rejects almost every candidate: forced inline at each site. The capsule
 /// test and the primitive's are out of line.
 #[inline(always)]
-fn candidate_meets<N: Number, const MAX_OBJECTS: usize>(
-    scene: &Scene<N, MAX_OBJECTS>,
+fn candidate_meets<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
+    scene: &Scene<N, MAX_OBJECTS, O>,
     segment: &ShadowSegment<N>,
     cones: &[DirectionChord<N>],
     (from_light, quantized): (Vector3<N>, QuantizedDirection),
@@ -254,12 +254,12 @@ struct ShadowSegment<N> {
 impl<N: Number> ShadowSegment<N> {
     /// Whether the object's capsule lets the segment through, else whether its primitive does.
     #[inline(never)]
-    fn may_meet_and_meets<const MAX_OBJECTS: usize>(&self, scene: &Scene<N, MAX_OBJECTS>, index: usize, statistics: &mut Statistics) -> bool {
+    fn may_meet_and_meets<const MAX_OBJECTS: usize, O: Objects<N>>(&self, scene: &Scene<N, MAX_OBJECTS, O>, index: usize, statistics: &mut Statistics) -> bool {
         scene.acceleration.may_shadow(index, self.ray.origin, self.ray.direction, self.interval.max) && self.meets(scene, index, statistics)
     }
 
     /// The shadow test proper (`occluded` in the object's space), counted.
-    fn meets<const MAX_OBJECTS: usize>(&self, scene: &Scene<N, MAX_OBJECTS>, index: usize, statistics: &mut Statistics) -> bool {
+    fn meets<const MAX_OBJECTS: usize, O: Objects<N>>(&self, scene: &Scene<N, MAX_OBJECTS, O>, index: usize, statistics: &mut Statistics) -> bool {
         let Some(object) = scene.objects.get(index) else { return false };
         statistics.shadow_tests += 1;
         object.primitive.occluded(&object.object_from_world.ray(&self.ray), self.interval)

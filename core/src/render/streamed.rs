@@ -32,38 +32,38 @@ use super::trace::{pixel_value, with_shadow_culling, Mode, PgaNodes, RgbNodes, A
 use super::Statistics;
 use crate::number::Number;
 use crate::pixel::{PixelSink, Rgb888};
-use crate::scene::{Scene, MAX_DEPTH};
+use crate::scene::{Objects, Scene, MAX_DEPTH};
 
 /// [`super::render_pga`] into a sink that is never read: each row written once and then done.
-pub fn render_pga_streamed<N, S, const MAX_OBJECTS: usize>(scene: &Scene<N, MAX_OBJECTS>, sink: &mut S, statistics: &mut Statistics)
+pub fn render_pga_streamed<N, S, const MAX_OBJECTS: usize, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, statistics: &mut Statistics)
 where
     N: Number,
     S: PixelSink<u8>,
 {
-    render_pga_streamed_sized::<N, S, MAX_OBJECTS, { MAX_DEPTH as usize }, ANTIALIAS_ROW>(scene, sink, statistics);
+    render_pga_streamed_sized::<N, S, MAX_OBJECTS, O, { MAX_DEPTH as usize }, ANTIALIAS_ROW>(scene, sink, statistics);
 }
 
 /// [`super::render_pga_sized`] into a sink that is never read: its stack sized for the scene
 /// (a ray tree at most `DEPTH` generations deep, a row of `ROW` antialiasing corners).
-pub fn render_pga_streamed_sized<N, S, const MAX_OBJECTS: usize, const DEPTH: usize, const ROW: usize>(scene: &Scene<N, MAX_OBJECTS>, sink: &mut S, statistics: &mut Statistics)
+pub fn render_pga_streamed_sized<N, S, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize, const ROW: usize>(scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, statistics: &mut Statistics)
 where
     N: Number,
     S: PixelSink<u8>,
 {
-    streamed::<N, u8, S, _, MAX_OBJECTS, DEPTH, ROW>(scene, sink, statistics, scene.background, &PgaNodes { scene });
+    streamed::<N, u8, S, _, MAX_OBJECTS, O, DEPTH, ROW>(scene, sink, statistics, scene.background, &PgaNodes { scene });
 }
 
 /// [`super::render_rgb`] into a sink that is never read.
-pub fn render_rgb_streamed<N, S, const MAX_OBJECTS: usize>(scene: &Scene<N, MAX_OBJECTS>, sink: &mut S, statistics: &mut Statistics)
+pub fn render_rgb_streamed<N, S, const MAX_OBJECTS: usize, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, statistics: &mut Statistics)
 where
     N: Number,
     S: PixelSink<Rgb888>,
 {
-    streamed::<N, Rgb888, S, _, MAX_OBJECTS, { MAX_DEPTH as usize }, ANTIALIAS_ROW>(scene, sink, statistics, scene.background_rgb(), &RgbNodes { scene });
+    streamed::<N, Rgb888, S, _, MAX_OBJECTS, O, { MAX_DEPTH as usize }, ANTIALIAS_ROW>(scene, sink, statistics, scene.background_rgb(), &RgbNodes { scene });
 }
 
-fn streamed<N, P, S, M, const MAX_OBJECTS: usize, const DEPTH: usize, const ROW: usize>(
-    scene: &Scene<N, MAX_OBJECTS>,
+fn streamed<N, P, S, M, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize, const ROW: usize>(
+    scene: &Scene<N, MAX_OBJECTS, O>,
     sink: &mut S,
     statistics: &mut Statistics,
     background: P,
@@ -78,7 +78,7 @@ fn streamed<N, P, S, M, const MAX_OBJECTS: usize, const DEPTH: usize, const ROW:
     let (width, height) = (camera.width(), camera.height());
     if let Some(antialias) = scene.antialias {
         return with_shadow_culling(scene, |culling| {
-            render_antialiased::<N, P, S, M, MAX_OBJECTS, DEPTH, ROW>(scene, antialias, sink, statistics, 0..height, mode, culling)
+            render_antialiased::<N, P, S, M, MAX_OBJECTS, O, DEPTH, ROW>(scene, antialias, sink, statistics, 0..height, mode, culling)
         });
     }
     let pixelbuffer = scene.optimizations.pixelbuffer;
@@ -86,7 +86,7 @@ fn streamed<N, P, S, M, const MAX_OBJECTS: usize, const DEPTH: usize, const ROW:
     with_shadow_culling(scene, |culling| {
         let mut trace = |column: u16, row: u16, statistics: &mut Statistics, sink: &mut S| {
             let pixel = camera.pixel(column, row);
-            let value = pixel_value::<N, M, MAX_OBJECTS, DEPTH>(scene, mode, pixel, statistics, &mut cache, culling).unwrap_or(background);
+            let value = pixel_value::<N, M, MAX_OBJECTS, O, DEPTH>(scene, mode, pixel, statistics, &mut cache, culling).unwrap_or(background);
             sink.set_pixel(column, row, value);
         };
         for row in 0..height {

@@ -21,7 +21,7 @@ use crate::number::Number;
 use crate::pixel::{PixelSink, PixelSource, Rgb888};
 #[cfg(feature = "acceleration-tables")]
 use crate::scene::{PreparedLight, MAX_LIGHTS};
-use crate::scene::{PreparedMaterial, Scene, MAX_DEPTH};
+use crate::scene::{Objects, PreparedMaterial, Scene, MAX_DEPTH};
 use crate::shading::{pga_index, rgb_intensity, rgb_pixel, rgb_quantized, Lighting};
 
 /// What a traced pixel saw: nothing, or an object's material lit by `lighting`.
@@ -32,16 +32,16 @@ pub enum ShadedPixel<N> {
 }
 
 /// Traces one pixel's primary ray and, for a hit, its shadow ray, and evaluates the lighting.
-pub fn shade_pixel<N: Number, const MAX_OBJECTS: usize>(
-    scene: &Scene<N, MAX_OBJECTS>,
+pub fn shade_pixel<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
+    scene: &Scene<N, MAX_OBJECTS, O>,
     pixel: PixelPosition,
     statistics: &mut Statistics,
 ) -> ShadedPixel<N> {
     shade_pixel_cached(scene, pixel, statistics, &mut ShadowCache::default(), &[])
 }
 
-fn shade_pixel_cached<N: Number, const MAX_OBJECTS: usize>(
-    scene: &Scene<N, MAX_OBJECTS>,
+fn shade_pixel_cached<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
+    scene: &Scene<N, MAX_OBJECTS, O>,
     pixel: PixelPosition,
     statistics: &mut Statistics,
     cache: &mut ShadowCache,
@@ -58,8 +58,8 @@ fn shade_pixel_cached<N: Number, const MAX_OBJECTS: usize>(
 /// memory was a `memcpy` of about 100 bytes, twice a pixel, in a software number type (7 % of
 /// a Cortex-M3 `soft32` frame).
 #[inline(never)]
-pub(crate) fn primary_surface_then<N: Number, R, const MAX_OBJECTS: usize>(
-    scene: &Scene<N, MAX_OBJECTS>,
+pub(crate) fn primary_surface_then<N: Number, R, const MAX_OBJECTS: usize, O: Objects<N>>(
+    scene: &Scene<N, MAX_OBJECTS, O>,
     pixel: PixelPosition,
     statistics: &mut Statistics,
     cache: &mut ShadowCache,
@@ -80,7 +80,7 @@ pub(crate) fn primary_surface_then<N: Number, R, const MAX_OBJECTS: usize>(
 
 /// Renders the scene in PGA mode: one palette index per pixel, rows top first, calling
 /// `row_done` after each row.
-pub fn render_pga<N, S, const MAX_OBJECTS: usize>(scene: &Scene<N, MAX_OBJECTS>, sink: &mut S, statistics: &mut Statistics)
+pub fn render_pga<N, S, const MAX_OBJECTS: usize, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, statistics: &mut Statistics)
 where
     N: Number,
     S: PixelSink<u8> + PixelSource<u8>,
@@ -97,29 +97,29 @@ pub const ANTIALIAS_ROW: usize = 2049;
 /// ray tree at most `DEPTH` generations deep (a scene's deeper `depth` is cut there;
 /// [`render_pga`] allows the format's deepest, 8), and a row of `ROW` corners for antialiasing
 /// (the image's width plus one shares every corner; fewer traces some twice).
-pub fn render_pga_sized<N, S, const MAX_OBJECTS: usize, const DEPTH: usize, const ROW: usize>(scene: &Scene<N, MAX_OBJECTS>, sink: &mut S, statistics: &mut Statistics)
+pub fn render_pga_sized<N, S, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize, const ROW: usize>(scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, statistics: &mut Statistics)
 where
     N: Number,
     S: PixelSink<u8> + PixelSource<u8>,
 {
     let nodes = PgaNodes { scene };
-    render::<N, u8, S, _, MAX_OBJECTS, DEPTH, ROW>(scene, sink, statistics, 0..scene.camera.height(), scene.background, (PGA_FILL, PGA_FILL ^ 0xFF), &nodes)
+    render::<N, u8, S, _, MAX_OBJECTS, O, DEPTH, ROW>(scene, sink, statistics, 0..scene.camera.height(), scene.background, (PGA_FILL, PGA_FILL ^ 0xFF), &nodes)
 }
 
 /// [`render_pga`] of the image rows `rows` only (a band, for one of several threads): the
 /// sink receives only those rows. Every pixel's value equals the whole render's; the
 /// statistics are the band's (the hit and shadow caches start empty at its first row).
-pub fn render_pga_rows<N, S, const MAX_OBJECTS: usize>(scene: &Scene<N, MAX_OBJECTS>, sink: &mut S, statistics: &mut Statistics, rows: Range<u16>)
+pub fn render_pga_rows<N, S, const MAX_OBJECTS: usize, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, statistics: &mut Statistics, rows: Range<u16>)
 where
     N: Number,
     S: PixelSink<u8> + PixelSource<u8>,
 {
     let nodes = PgaNodes { scene };
-    render::<N, u8, S, _, MAX_OBJECTS, { MAX_DEPTH as usize }, ANTIALIAS_ROW>(scene, sink, statistics, rows, scene.background, (PGA_FILL, PGA_FILL ^ 0xFF), &nodes)
+    render::<N, u8, S, _, MAX_OBJECTS, O, { MAX_DEPTH as usize }, ANTIALIAS_ROW>(scene, sink, statistics, rows, scene.background, (PGA_FILL, PGA_FILL ^ 0xFF), &nodes)
 }
 
 /// Renders the scene in RGB mode (see `shading::rgb` for how it differs from the thesis).
-pub fn render_rgb<N, S, const MAX_OBJECTS: usize>(scene: &Scene<N, MAX_OBJECTS>, sink: &mut S, statistics: &mut Statistics)
+pub fn render_rgb<N, S, const MAX_OBJECTS: usize, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, statistics: &mut Statistics)
 where
     N: Number,
     S: PixelSink<Rgb888> + PixelSource<Rgb888>,
@@ -128,13 +128,13 @@ where
 }
 
 /// [`render_rgb`] of the image rows `rows` only (see [`render_pga_rows`]).
-pub fn render_rgb_rows<N, S, const MAX_OBJECTS: usize>(scene: &Scene<N, MAX_OBJECTS>, sink: &mut S, statistics: &mut Statistics, rows: Range<u16>)
+pub fn render_rgb_rows<N, S, const MAX_OBJECTS: usize, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, statistics: &mut Statistics, rows: Range<u16>)
 where
     N: Number,
     S: PixelSink<Rgb888> + PixelSource<Rgb888>,
 {
     let nodes = RgbNodes { scene };
-    render::<N, Rgb888, S, _, MAX_OBJECTS, { MAX_DEPTH as usize }, ANTIALIAS_ROW>(scene, sink, statistics, rows, scene.background_rgb(), (RGB_FILL, RGB_FILL.map(|c| c ^ 0xFF)), &nodes)
+    render::<N, Rgb888, S, _, MAX_OBJECTS, O, { MAX_DEPTH as usize }, ANTIALIAS_ROW>(scene, sink, statistics, rows, scene.background_rgb(), (RGB_FILL, RGB_FILL.map(|c| c ^ 0xFF)), &nodes)
 }
 
 /// Pixelbuffer's fill colour in PGA mode (the thesis's default `fillcolor`); the flood is its
@@ -155,11 +155,11 @@ pub(crate) trait Mode<N>: NodeColours<N> {
 
 /// PGA mode: a surface's palette index; a tree's node is its index's LUT colour, and a mixed
 /// pixel the LUT entry nearest the mix (scene format, chapter 5).
-pub(crate) struct PgaNodes<'a, N, const MAX_OBJECTS: usize> {
-    pub scene: &'a Scene<N, MAX_OBJECTS>,
+pub(crate) struct PgaNodes<'a, N, const MAX_OBJECTS: usize, O> {
+    pub scene: &'a Scene<N, MAX_OBJECTS, O>,
 }
 
-impl<N: Number, const MAX_OBJECTS: usize> NodeColours<N> for PgaNodes<'_, N, MAX_OBJECTS> {
+impl<N: Number, const MAX_OBJECTS: usize, O: Objects<N>> NodeColours<N> for PgaNodes<'_, N, MAX_OBJECTS, O> {
     type Pixel = u8;
     fn finish(&self, colour: [N; 3], _pixel: PixelPosition) -> u8 {
         let half = self.scene.constants.half;
@@ -174,11 +174,11 @@ impl<N: Number, const MAX_OBJECTS: usize> NodeColours<N> for PgaNodes<'_, N, MAX
 }
 
 #[cfg_attr(not(feature = "ray-tree"), allow(dead_code))]
-fn lut_colour<N: Number, const MAX_OBJECTS: usize>(scene: &Scene<N, MAX_OBJECTS>, index: u8) -> [N; 3] {
+fn lut_colour<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, index: u8) -> [N; 3] {
     scene.palette.entry(index).to_rgb888().map(|c| N::from_i32(i32::from(c)))
 }
 
-impl<N: Number, const MAX_OBJECTS: usize> Mode<N> for PgaNodes<'_, N, MAX_OBJECTS> {
+impl<N: Number, const MAX_OBJECTS: usize, O: Objects<N>> Mode<N> for PgaNodes<'_, N, MAX_OBJECTS, O> {
     fn surface(&self, material: &PreparedMaterial<N>, lighting: Lighting<N>, pixel: PixelPosition) -> u8 {
         pga_index(material, lighting, &self.scene.constants, self.scene.dither, pixel)
     }
@@ -188,11 +188,11 @@ impl<N: Number, const MAX_OBJECTS: usize> Mode<N> for PgaNodes<'_, N, MAX_OBJECT
 }
 
 /// RGB mode: the channels' intensities, clamped and rounded (or dithered) once at the end.
-pub(crate) struct RgbNodes<'a, N, const MAX_OBJECTS: usize> {
-    pub scene: &'a Scene<N, MAX_OBJECTS>,
+pub(crate) struct RgbNodes<'a, N, const MAX_OBJECTS: usize, O> {
+    pub scene: &'a Scene<N, MAX_OBJECTS, O>,
 }
 
-impl<N: Number, const MAX_OBJECTS: usize> NodeColours<N> for RgbNodes<'_, N, MAX_OBJECTS> {
+impl<N: Number, const MAX_OBJECTS: usize, O: Objects<N>> NodeColours<N> for RgbNodes<'_, N, MAX_OBJECTS, O> {
     type Pixel = Rgb888;
     fn finish(&self, colour: [N; 3], pixel: PixelPosition) -> Rgb888 {
         rgb_quantized(colour, &self.scene.constants, self.scene.dither, pixel)
@@ -205,7 +205,7 @@ impl<N: Number, const MAX_OBJECTS: usize> NodeColours<N> for RgbNodes<'_, N, MAX
     }
 }
 
-impl<N: Number, const MAX_OBJECTS: usize> Mode<N> for RgbNodes<'_, N, MAX_OBJECTS> {
+impl<N: Number, const MAX_OBJECTS: usize, O: Objects<N>> Mode<N> for RgbNodes<'_, N, MAX_OBJECTS, O> {
     fn surface(&self, material: &PreparedMaterial<N>, lighting: Lighting<N>, pixel: PixelPosition) -> Rgb888 {
         rgb_pixel(material, lighting, &self.scene.constants, self.scene.dither, pixel)
     }
@@ -217,8 +217,8 @@ impl<N: Number, const MAX_OBJECTS: usize> Mode<N> for RgbNodes<'_, N, MAX_OBJECT
 /// One pixel: the primary hit's own shade, or, when the ray tree spawns rays from it, the
 /// tree's mix (a tree at most `DEPTH` generations deep).
 #[inline]
-pub(crate) fn pixel_value<N, M, const MAX_OBJECTS: usize, const DEPTH: usize>(
-    scene: &Scene<N, MAX_OBJECTS>,
+pub(crate) fn pixel_value<N, M, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize>(
+    scene: &Scene<N, MAX_OBJECTS, O>,
     mode: &M,
     pixel: PixelPosition,
     statistics: &mut Statistics,
@@ -233,7 +233,7 @@ where
         #[cfg(feature = "ray-tree")]
         if scene.has_ray_tree() {
             let context = TreeContext { scene, colours: mode, pixel, culling };
-            if let Some(mixed) = trace_tree::<N, M, MAX_OBJECTS, DEPTH>(&context, *at, mode.local(material, lighting, pixel), statistics, cache) {
+            if let Some(mixed) = trace_tree::<N, M, MAX_OBJECTS, O, DEPTH>(&context, *at, mode.local(material, lighting, pixel), statistics, cache) {
                 return mode.finish(mixed, pixel);
             }
         }
@@ -243,8 +243,8 @@ where
     })
 }
 
-fn render<N, P, S, M, const MAX_OBJECTS: usize, const DEPTH: usize, const ROW: usize>(
-    scene: &Scene<N, MAX_OBJECTS>,
+fn render<N, P, S, M, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize, const ROW: usize>(
+    scene: &Scene<N, MAX_OBJECTS, O>,
     sink: &mut S,
     statistics: &mut Statistics,
     rows: Range<u16>,
@@ -259,7 +259,7 @@ fn render<N, P, S, M, const MAX_OBJECTS: usize, const DEPTH: usize, const ROW: u
 {
     if let Some(antialias) = scene.antialias {
         return with_shadow_culling(scene, |culling| {
-            render_antialiased::<N, P, S, M, MAX_OBJECTS, DEPTH, ROW>(scene, antialias, sink, statistics, rows, mode, culling)
+            render_antialiased::<N, P, S, M, MAX_OBJECTS, O, DEPTH, ROW>(scene, antialias, sink, statistics, rows, mode, culling)
         });
     }
     let camera = &scene.camera;
@@ -297,7 +297,7 @@ fn render<N, P, S, M, const MAX_OBJECTS: usize, const DEPTH: usize, const ROW: u
                 }
             }
             let pixel = camera.pixel(column, row);
-            let value = pixel_value::<N, M, MAX_OBJECTS, DEPTH>(scene, mode, pixel, statistics, &mut cache, culling).unwrap_or(background);
+            let value = pixel_value::<N, M, MAX_OBJECTS, O, DEPTH>(scene, mode, pixel, statistics, &mut cache, culling).unwrap_or(background);
             sink.set_pixel(column, row, value);
             column += 1;
         }
@@ -311,7 +311,7 @@ fn render<N, P, S, M, const MAX_OBJECTS: usize, const DEPTH: usize, const ROW: u
 /// computed when the scene was prepared), row span by row span, in integer arithmetic. With
 /// the thesis's tuning, the thesis's fill: each 8-vertex volume projected and scan-converted. Public so a viewer can
 /// record which pixels the fill marks (into a sink of its own, with its own two values).
-pub fn fill_volumes<N, P, S, const MAX_OBJECTS: usize>(scene: &Scene<N, MAX_OBJECTS>, sink: &mut S, fill: P, flood: P)
+pub fn fill_volumes<N, P, S, const MAX_OBJECTS: usize, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, fill: P, flood: P)
 where
     N: Number,
     P: Copy,
@@ -321,7 +321,7 @@ where
 }
 
 /// [`fill_volumes`] within the image rows `rows` only.
-pub fn fill_volumes_rows<N, P, S, const MAX_OBJECTS: usize>(scene: &Scene<N, MAX_OBJECTS>, sink: &mut S, fill: P, flood: P, rows: Range<u16>)
+pub fn fill_volumes_rows<N, P, S, const MAX_OBJECTS: usize, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, fill: P, flood: P, rows: Range<u16>)
 where
     N: Number,
     P: Copy,
@@ -399,8 +399,8 @@ where
 /// overlapping pairs (`optimize::shadow::blocker_table`). Without the `acceleration-tables`
 /// feature there are none.
 #[cfg(feature = "acceleration-tables")]
-pub(crate) fn with_shadow_culling<N: Number, R, const MAX_OBJECTS: usize>(
-    scene: &Scene<N, MAX_OBJECTS>,
+pub(crate) fn with_shadow_culling<N: Number, R, const MAX_OBJECTS: usize, O: Objects<N>>(
+    scene: &Scene<N, MAX_OBJECTS, O>,
     body: impl FnOnce(&[ShadowCulling<'_, N>]) -> R,
 ) -> R {
     let mut light_cones = [DirectionChord::ALWAYS; MAX_OBJECTS];
@@ -421,8 +421,8 @@ pub(crate) fn with_shadow_culling<N: Number, R, const MAX_OBJECTS: usize>(
 /// keeps none of their stack.
 #[cfg(feature = "acceleration-tables")]
 #[inline(never)]
-fn with_more_lights_culling<N: Number, R, const MAX_OBJECTS: usize>(
-    scene: &Scene<N, MAX_OBJECTS>,
+fn with_more_lights_culling<N: Number, R, const MAX_OBJECTS: usize, O: Objects<N>>(
+    scene: &Scene<N, MAX_OBJECTS, O>,
     count: usize,
     first: ShadowCulling<'_, N>,
     body: impl FnOnce(&[ShadowCulling<'_, N>]) -> R,
@@ -452,8 +452,8 @@ fn culling_of<'a, N: Number>(light: PreparedLight<N>, count: usize, light_cones:
 /// object in `f32`) are off the stack before the render's frames are on it.
 #[cfg(feature = "acceleration-tables")]
 #[inline(never)]
-fn build_shadow_tables<N: Number, const MAX_OBJECTS: usize>(
-    scene: &Scene<N, MAX_OBJECTS>,
+fn build_shadow_tables<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
+    scene: &Scene<N, MAX_OBJECTS, O>,
     light: PreparedLight<N>,
     count: usize,
     light_cones: &mut [DirectionChord<N>; MAX_OBJECTS],
@@ -476,8 +476,8 @@ fn build_shadow_tables<N: Number, const MAX_OBJECTS: usize>(
 }
 
 #[cfg(not(feature = "acceleration-tables"))]
-pub(crate) fn with_shadow_culling<N: Number, R, const MAX_OBJECTS: usize>(
-    _scene: &Scene<N, MAX_OBJECTS>,
+pub(crate) fn with_shadow_culling<N: Number, R, const MAX_OBJECTS: usize, O: Objects<N>>(
+    _scene: &Scene<N, MAX_OBJECTS, O>,
     body: impl FnOnce(&[ShadowCulling<'_, N>]) -> R,
 ) -> R {
     body(&[])

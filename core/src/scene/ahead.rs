@@ -13,7 +13,7 @@ use crate::number::Number;
 use crate::optimize::bounding_sphere::BoundingSphere;
 use crate::optimize::ObjectBounds;
 use crate::parser::{SceneError, SceneErrorKind};
-use crate::scene::{Object, Optics, Optimizations, PreparedAntialias, PreparedLight, PreparedLightSource, Scene, MAX_LIGHTS};
+use crate::scene::{Objects, Optics, Optimizations, PreparedAntialias, PreparedLight, PreparedLightSource, Scene, MAX_LIGHTS};
 use crate::shading::{Palette, ShadingConstants};
 
 /// The parts of a scene prepared ahead, as the firmware keeps them in flash.
@@ -36,14 +36,12 @@ pub struct PreparedAhead<'a, N> {
     pub dither: bool,
     pub optimizations: Optimizations,
     pub palette: &'a Palette,
-    /// The objects; their `eye` is filled in by [`Scene::prepare_ahead`] (it depends on the view).
-    pub objects: &'a [Object<N>],
     pub bounds: &'a [ObjectBounds<N>],
 }
 
-impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
-    /// Prepares the scene in place from parts made ahead: copies them, puts the eye into each
-    /// object's space and builds the acceleration structures from the bounds (per frame: the
+impl<N: Number, const MAX_OBJECTS: usize, O: Objects<N>> Scene<N, MAX_OBJECTS, O> {
+    /// Prepares the scene in place from parts made ahead: copies them, puts the eye into the
+    /// space of each of the scene's objects (already prepared ahead too) and builds the acceleration structures from the bounds (per frame: the
     /// work that depends on the view and the light).
     pub fn prepare_ahead(&mut self, parts: &PreparedAhead<'_, N>) -> Result<(), SceneError> {
         let too_many = |capacity| SceneError { line: 0, kind: SceneErrorKind::TooManyObjects { capacity } };
@@ -75,13 +73,12 @@ impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
         self.dither = parts.dither;
         self.optimizations = parts.optimizations;
         self.palette = *parts.palette;
-        self.objects.clear();
-        let eye = self.camera.eye();
-        for object in parts.objects {
-            let mut object = *object;
-            object.eye = eye.map_or(Vector3::zero(), |eye| object.object_from_world.point(eye));
-            self.objects.push(object).map_err(|_| too_many(MAX_OBJECTS))?;
+        // The objects are the scene's own (the firmware's in flash, `OBJECTS_AHEAD`): only their
+        // eyes are placed, as they depend on the view.
+        if self.objects.len() > MAX_OBJECTS {
+            return Err(too_many(MAX_OBJECTS));
         }
+        self.place_eyes();
         self.acceleration.rebuild_from_bounds(&self.camera, self.optimizations, parts.bounds);
         Ok(())
     }
@@ -90,10 +87,10 @@ impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
 /// Writes the Rust source of `scene`'s parts prepared ahead: `OBJECTS_AHEAD`, `BOUNDS_AHEAD`,
 /// `PALETTE_AHEAD` and `AHEAD` (a [`PreparedAhead`]), the number type named `Number` where it
 /// is written (every value bit for bit, by [`Number::write_literal`]).
-pub fn write_prepared_ahead<N: Number, const MAX_OBJECTS: usize>(scene: &Scene<N, MAX_OBJECTS>, bounds: &[ObjectBounds<N>], out: &mut dyn Write) -> fmt::Result {
+pub fn write_prepared_ahead<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, bounds: &[ObjectBounds<N>], out: &mut dyn Write) -> fmt::Result {
     let count = scene.objects.len();
     writeln!(out, "pub static OBJECTS_AHEAD: [microtrace::scene::Object<Number>; {count}] = [")?;
-    for object in &scene.objects {
+    for object in scene.objects.iter() {
         let columns = object.object_from_world.columns();
         write!(out, "    microtrace::scene::Object {{ primitive: microtrace::scene::Primitive::{:?}, object_from_world: microtrace::geometry::AffineTransform::from_parts([", object.primitive)?;
         for column in columns {
@@ -102,10 +99,8 @@ pub fn write_prepared_ahead<N: Number, const MAX_OBJECTS: usize>(scene: &Scene<N
         }
         write!(out, "], ")?;
         numbers(out, &object.object_from_world.translation)?;
-        write!(out, "), eye: ")?;
-        vector(out, Vector3::<N>::zero())?;
         let m = &object.material;
-        write!(out, ", material: microtrace::scene::PreparedMaterial {{ colour: {}, ka: ", m.colour)?;
+        write!(out, "), material: microtrace::scene::PreparedMaterial {{ colour: {}, ka: ", m.colour)?;
         m.ka.write_literal(out)?;
         write!(out, ", kd: ")?;
         m.kd.write_literal(out)?;
@@ -203,11 +198,11 @@ pub fn write_prepared_ahead<N: Number, const MAX_OBJECTS: usize>(scene: &Scene<N
         " }},\n    background: {},\n    shadows: {},\n    dither: {},\n    optimizations: microtrace::scene::Optimizations {{ pixelbuffer: {}, extents: {}, grid: {}, sortlist: {} }},",
         scene.background, scene.shadows, scene.dither, o.pixelbuffer, o.extents, o.grid, o.sortlist
     )?;
-    writeln!(out, "    palette: &PALETTE_AHEAD,\n    objects: &OBJECTS_AHEAD,\n    bounds: &BOUNDS_AHEAD,\n}};")
+    writeln!(out, "    palette: &PALETTE_AHEAD,\n    bounds: &BOUNDS_AHEAD,\n}};")
 }
 
 /// `MORE_LIGHTS_AHEAD`, and `OPTICS_AHEAD` and `SPHERES_AHEAD` (the ray tree's, empty without it).
-fn write_tree_ahead<N: Number, const MAX_OBJECTS: usize>(scene: &Scene<N, MAX_OBJECTS>, out: &mut dyn Write) -> fmt::Result {
+fn write_tree_ahead<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, out: &mut dyn Write) -> fmt::Result {
     writeln!(out, "pub static MORE_LIGHTS_AHEAD: [microtrace::scene::PreparedLightSource<Number>; {}] = [", scene.more_lights.len())?;
     for source in &scene.more_lights {
         let (kind, position) = match source.light {

@@ -5,6 +5,8 @@
 //!
 //! Storage is fixed at compile time: `MAX_OBJECTS` objects, no allocator.
 
+use core::ops::Deref;
+
 use heapless::Vec;
 
 use crate::camera::Camera;
@@ -34,6 +36,14 @@ pub struct PreparedMaterial<N> {
     pub reflectance: [N; 3],
 }
 
+/// Where a prepared scene's objects live: anything that reads as a slice of them. The host's
+/// scene owns them (`heapless::Vec`, the default, prepared from a description); the firmware's
+/// reads them in flash, where its build put them prepared ahead (`OBJECTS_AHEAD`), so that they
+/// take no RAM: only what depends on the view (each object's eye, [`Scene::eyes`]) is in RAM.
+pub trait Objects<N>: Deref<Target = [Object<N>]> {}
+
+impl<N, T: Deref<Target = [Object<N>]>> Objects<N> for T {}
+
 /// One object as the tracer needs it: the primitive, world -> object, and the material.
 /// The forward transform is not kept: only the inverse is used per ray, and normals go back
 /// through its transpose.
@@ -41,10 +51,6 @@ pub struct PreparedMaterial<N> {
 pub struct Object<N> {
     pub primitive: Primitive,
     pub object_from_world: AffineTransform<N>,
-    /// A perspective view's eye in object space (`object_from_world.point(eye)`, the same
-    /// bits as transforming it per ray): every primary ray starts there, so a ray–object test
-    /// transforms only the direction. Zero for a parallel view.
-    pub eye: Vector3<N>,
     pub material: PreparedMaterial<N>,
 }
 
@@ -111,8 +117,13 @@ pub struct Optics<N> {
 }
 
 #[derive(Debug, Clone)]
-pub struct Scene<N, const MAX_OBJECTS: usize> {
-    pub objects: Vec<Object<N>, MAX_OBJECTS>,
+pub struct Scene<N, const MAX_OBJECTS: usize, O = Vec<Object<N>, MAX_OBJECTS>> {
+    pub objects: O,
+    /// A perspective view's eye in each object's space (`object_from_world.point(eye)`, the
+    /// same bits as transforming it per ray), indexed like `objects`: every primary ray starts
+    /// there, so a ray–object test transforms only the direction. Zero for a parallel view.
+    /// It depends on the view, so it is kept apart from the objects (which may be in flash).
+    pub eyes: [Vector3<N>; MAX_OBJECTS],
     pub camera: Camera<N>,
     /// The first light (the thesis's only one).
     pub light: PreparedLight<N>,
@@ -148,6 +159,48 @@ pub struct Scene<N, const MAX_OBJECTS: usize> {
     pub acceleration: Acceleration<N, MAX_OBJECTS>,
 }
 
+impl<N: Number, const MAX_OBJECTS: usize, O> Scene<N, MAX_OBJECTS, O> {
+    /// Every byte zero but the objects' (`objects`; the firmware's, in flash, take none): the
+    /// value of a scene to be prepared in place. The firmware keeps its scene in a `static` of
+    /// this value (zero-initialised RAM, no flash) and prepares it there: a scene returned by
+    /// value would pass through the stack.
+    pub const fn unprepared(objects: O) -> Self {
+        Self {
+            objects,
+            eyes: [Vector3 { x: N::ZEROED, y: N::ZEROED, z: N::ZEROED }; MAX_OBJECTS],
+            camera: Camera::UNSET,
+            light: PreparedLight::Point(Vector3 { x: N::ZEROED, y: N::ZEROED, z: N::ZEROED }),
+            light_intensity: N::ZEROED,
+            more_lights: Vec::new(),
+            #[cfg(feature = "ray-tree")]
+            optics: Vec::new(),
+            #[cfg(feature = "ray-tree")]
+            transparent: false,
+            #[cfg(feature = "ray-tree")]
+            spheres: Vec::new(),
+            #[cfg(feature = "ray-tree")]
+            space_grid: SpaceGrid::NONE,
+            depth: 0,
+            antialias: None,
+            constants: ShadingConstants {
+                fifteen: N::ZEROED,
+                brightest: N::ZEROED,
+                half: N::ZEROED,
+                noise_step: N::ZEROED,
+                ambient: N::ZEROED,
+                full_rgb: N::ZEROED,
+                brightest_rgb: N::ZEROED,
+            },
+            background: 0,
+            shadows: false,
+            dither: false,
+            optimizations: Optimizations::NONE,
+            palette: Palette { entries: [Rgb4 { r: 0, g: 0, b: 0 }; 256] },
+            acceleration: Acceleration::UNSET,
+        }
+    }
+}
+
 impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
     pub fn prepare<const CAPACITY: usize>(description: &SceneDescription<CAPACITY>) -> Result<Self, SceneError> {
         Self::prepare_with_objects(description, &description.objects)
@@ -164,41 +217,9 @@ impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
         Ok(scene)
     }
 
-    /// Every byte zero, no objects: the value of a scene to be prepared in place. The firmware
-    /// keeps its scene in a `static` of this value (zero-initialised RAM, no flash) and
-    /// prepares it there: a scene returned by value would pass through the stack.
-    pub const UNPREPARED: Self = Self {
-        objects: Vec::new(),
-        camera: Camera::UNSET,
-        light: PreparedLight::Point(Vector3 { x: N::ZEROED, y: N::ZEROED, z: N::ZEROED }),
-        light_intensity: N::ZEROED,
-        more_lights: Vec::new(),
-        #[cfg(feature = "ray-tree")]
-        optics: Vec::new(),
-        #[cfg(feature = "ray-tree")]
-        transparent: false,
-        #[cfg(feature = "ray-tree")]
-        spheres: Vec::new(),
-        #[cfg(feature = "ray-tree")]
-        space_grid: SpaceGrid::NONE,
-        depth: 0,
-        antialias: None,
-        constants: ShadingConstants {
-            fifteen: N::ZEROED,
-            brightest: N::ZEROED,
-            half: N::ZEROED,
-            noise_step: N::ZEROED,
-            ambient: N::ZEROED,
-            full_rgb: N::ZEROED,
-            brightest_rgb: N::ZEROED,
-        },
-        background: 0,
-        shadows: false,
-        dither: false,
-        optimizations: Optimizations::NONE,
-        palette: Palette { entries: [Rgb4 { r: 0, g: 0, b: 0 }; 256] },
-        acceleration: Acceleration::UNSET,
-    };
+    /// Every byte zero, no objects: the value of a scene to be prepared in place
+    /// ([`Scene::unprepared`] with no objects).
+    pub const UNPREPARED: Self = Self::unprepared(Vec::new());
 
     /// [`Scene::prepare_with_objects`] into `self`, every part written in place (any earlier
     /// scene is replaced).
@@ -265,6 +286,82 @@ impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
         })
     }
 
+    /// Prepares the objects into `self.objects` and builds the acceleration structures, in place.
+    fn prepare_objects<const CAPACITY: usize>(
+        &mut self,
+        description: &SceneDescription<CAPACITY>,
+        descriptions: &[ObjectDescription],
+    ) -> Result<(), SceneError> {
+        range::check_camera_and_light::<N, CAPACITY>(description)?;
+        let origins = RayOrigins::of(description, descriptions);
+        let objects = &mut self.objects;
+        objects.clear();
+        #[cfg(feature = "ray-tree")]
+        let spawns_rays = descriptions.iter().any(|object| object.material.spawns_rays());
+        #[cfg(feature = "ray-tree")]
+        self.optics.clear();
+        #[cfg(feature = "ray-tree")]
+        self.spheres.clear();
+        for object in descriptions {
+            let error = |kind| SceneError { line: object.line, kind };
+            if !object.primitive.is_compiled() {
+                return Err(error(SceneErrorKind::PrimitiveNotCompiled { primitive: object.primitive.name() }));
+            }
+            let inverse = object.world_from_object.affine_inverse().ok_or(error(SceneErrorKind::SingularTransform))?;
+            range::check_object::<N>(object, &inverse, &origins)?;
+            let material = &object.material;
+            let object_from_world = AffineTransform::from_matrix(&inverse);
+            let prepared = Object {
+                primitive: object.primitive,
+                object_from_world,
+                material: PreparedMaterial {
+                    colour: material.colour & 15,
+                    ka: N::from_f64(material.ka),
+                    kd: N::from_f64(material.kd),
+                    ks: N::from_f64(material.ks),
+                    rnd: N::from_f64(material.rnd),
+                    power: libm::round(material.pwr.clamp(0.0, 1.0e6)) as u32,
+                    reflectance: material.cmy.map(|c| N::from_f64((1.0 - c).clamp(0.0, 1.0))),
+                },
+            };
+            objects.push(prepared).map_err(|_| error(SceneErrorKind::TooManyObjects { capacity: MAX_OBJECTS }))?;
+            #[cfg(feature = "ray-tree")]
+            if spawns_rays {
+                self.optics
+                    .push(Optics { reflect: N::from_f64(material.reflect), transmit: N::from_f64(material.transmit), ior: N::from_f64(material.ior) })
+                    .map_err(|_| error(SceneErrorKind::TooManyObjects { capacity: MAX_OBJECTS }))?;
+                self.spheres
+                    .push(BoundingSphere::of(object.primitive, &object.world_from_object))
+                    .map_err(|_| error(SceneErrorKind::TooManyObjects { capacity: MAX_OBJECTS }))?;
+            }
+            #[cfg(not(feature = "ray-tree"))]
+            if material.spawns_rays() {
+                let statement = if material.reflect > 0.0 { "reflect" } else { "transmit" };
+                return Err(error(SceneErrorKind::FeatureNotCompiled { feature: "ray-tree", statement }));
+            }
+        }
+        self.place_eyes();
+        self.acceleration.rebuild(&self.camera, description.optimizations, descriptions, Tuning::IMPROVED);
+        #[cfg(feature = "ray-tree")]
+        {
+            self.space_grid.build(&self.spheres);
+            self.transparent = self.optics.iter().any(|optics| optics.transmit > N::ZERO);
+        }
+        Ok(())
+    }
+}
+
+/// What the render reads of a prepared scene, wherever its objects live.
+impl<N: Number, const MAX_OBJECTS: usize, O: Objects<N>> Scene<N, MAX_OBJECTS, O> {
+    /// Each object's eye ([`Scene::eyes`]) for the camera's view: per frame, as it depends on
+    /// the view.
+    pub(crate) fn place_eyes(&mut self) {
+        let eye = self.camera.eye();
+        for (slot, object) in self.eyes.iter_mut().zip(self.objects.iter()) {
+            *slot = eye.map_or(Vector3::zero(), |eye| object.object_from_world.point(eye));
+        }
+    }
+
     /// All lights with their intensities, the first first.
     pub fn lights(&self) -> impl Iterator<Item = PreparedLightSource<N>> + '_ {
         core::iter::once(PreparedLightSource { light: self.light, intensity: self.light_intensity }).chain(self.more_lights.iter().copied())
@@ -300,70 +397,6 @@ impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
         return self.depth > 1 && !self.optics.is_empty();
         #[cfg(not(feature = "ray-tree"))]
         false
-    }
-
-    /// Prepares the objects into `self.objects` and builds the acceleration structures, in place.
-    fn prepare_objects<const CAPACITY: usize>(
-        &mut self,
-        description: &SceneDescription<CAPACITY>,
-        descriptions: &[ObjectDescription],
-    ) -> Result<(), SceneError> {
-        range::check_camera_and_light::<N, CAPACITY>(description)?;
-        let origins = RayOrigins::of(description, descriptions);
-        let objects = &mut self.objects;
-        objects.clear();
-        #[cfg(feature = "ray-tree")]
-        let spawns_rays = descriptions.iter().any(|object| object.material.spawns_rays());
-        #[cfg(feature = "ray-tree")]
-        self.optics.clear();
-        #[cfg(feature = "ray-tree")]
-        self.spheres.clear();
-        for object in descriptions {
-            let error = |kind| SceneError { line: object.line, kind };
-            if !object.primitive.is_compiled() {
-                return Err(error(SceneErrorKind::PrimitiveNotCompiled { primitive: object.primitive.name() }));
-            }
-            let inverse = object.world_from_object.affine_inverse().ok_or(error(SceneErrorKind::SingularTransform))?;
-            range::check_object::<N>(object, &inverse, &origins)?;
-            let material = &object.material;
-            let object_from_world = AffineTransform::from_matrix(&inverse);
-            let prepared = Object {
-                primitive: object.primitive,
-                object_from_world,
-                eye: self.camera.eye().map_or(Vector3::zero(), |eye| object_from_world.point(eye)),
-                material: PreparedMaterial {
-                    colour: material.colour & 15,
-                    ka: N::from_f64(material.ka),
-                    kd: N::from_f64(material.kd),
-                    ks: N::from_f64(material.ks),
-                    rnd: N::from_f64(material.rnd),
-                    power: libm::round(material.pwr.clamp(0.0, 1.0e6)) as u32,
-                    reflectance: material.cmy.map(|c| N::from_f64((1.0 - c).clamp(0.0, 1.0))),
-                },
-            };
-            objects.push(prepared).map_err(|_| error(SceneErrorKind::TooManyObjects { capacity: MAX_OBJECTS }))?;
-            #[cfg(feature = "ray-tree")]
-            if spawns_rays {
-                self.optics
-                    .push(Optics { reflect: N::from_f64(material.reflect), transmit: N::from_f64(material.transmit), ior: N::from_f64(material.ior) })
-                    .map_err(|_| error(SceneErrorKind::TooManyObjects { capacity: MAX_OBJECTS }))?;
-                self.spheres
-                    .push(BoundingSphere::of(object.primitive, &object.world_from_object))
-                    .map_err(|_| error(SceneErrorKind::TooManyObjects { capacity: MAX_OBJECTS }))?;
-            }
-            #[cfg(not(feature = "ray-tree"))]
-            if material.spawns_rays() {
-                let statement = if material.reflect > 0.0 { "reflect" } else { "transmit" };
-                return Err(error(SceneErrorKind::FeatureNotCompiled { feature: "ray-tree", statement }));
-            }
-        }
-        self.acceleration.rebuild(&self.camera, description.optimizations, descriptions, Tuning::IMPROVED);
-        #[cfg(feature = "ray-tree")]
-        {
-            self.space_grid.build(&self.spheres);
-            self.transparent = self.optics.iter().any(|optics| optics.transmit > N::ZERO);
-        }
-        Ok(())
     }
 
     /// The image's viewport (with antialiasing the camera's is the finer sample grid's).

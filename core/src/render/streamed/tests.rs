@@ -168,10 +168,10 @@ fn the_sized_variants_agree() {
         let mut pixels = vec![0u8; PIXELS];
         let mut frame = FrameBuffer::new(&mut pixels, WIDTH, HEIGHT).unwrap();
         let mut expected = Statistics::default();
-        render_pga_sized::<f32, _, CAPACITY, 4, 129>(&scene, &mut frame, &mut expected);
+        render_pga_sized::<f32, _, CAPACITY, _, 4, 129>(&scene, &mut frame, &mut expected);
         let mut sink = Box::new(Stream::new(0u8));
         let mut statistics = Statistics::default();
-        render_pga_streamed_sized::<f32, _, CAPACITY, 4, 129>(&scene, &mut *sink, &mut statistics);
+        render_pga_streamed_sized::<f32, _, CAPACITY, _, 4, 129>(&scene, &mut *sink, &mut statistics);
         assert!(sink.pixels.iter().zip(&pixels).all(|(a, b)| a == b), "{name}");
         assert_eq!(statistics, expected, "{name}");
         assert_eq!(sink.broken, 0, "{name}");
