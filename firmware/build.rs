@@ -357,12 +357,10 @@ fn generate<const N: usize>(
     // The ray tree's explicit stack holds this many nodes: the scene's `depth`, or one (the
     // primary hit) when no object spawns rays.
     let tree_depth = if d.objects.iter().any(|object| object.material.spawns_rays()) { d.depth } else { 1 };
-    // The progressive render has no sized variant yet: it uses neither (and the format's
-    // deepest tree and widest corner row instead).
-    writeln!(out, "#[cfg_attr(feature = \"progressive\", allow(dead_code))]\npub const TREE_DEPTH: usize = {tree_depth};").unwrap();
+    writeln!(out, "pub const TREE_DEPTH: usize = {tree_depth};").unwrap();
     // Antialiasing keeps one row of the pixels' corners: the image's width plus one.
     let corner_row = if d.antialias.is_some() { usize::from(d.viewport.width()) + 1 } else { 1 };
-    writeln!(out, "#[cfg_attr(feature = \"progressive\", allow(dead_code))]\npub const ANTIALIAS_ROW: usize = {corner_row};").unwrap();
+    writeln!(out, "pub const ANTIALIAS_ROW: usize = {corner_row};").unwrap();
     out
 }
 

@@ -28,7 +28,7 @@ use microtrace::pixel::PixelSink;
 #[cfg(any(feature = "framebuffer", feature = "progressive"))]
 use microtrace::pixel::{FrameBuffer, PixelSource};
 #[cfg(feature = "progressive")]
-use microtrace::render::{render_pga_progressive, PassStatistics};
+use microtrace::render::{render_pga_progressive_sized, PassStatistics};
 #[cfg(all(feature = "framebuffer", not(feature = "progressive")))]
 use microtrace::render::render_pga_sized;
 #[cfg(not(any(feature = "framebuffer", feature = "progressive")))]
@@ -189,7 +189,7 @@ fn render<S: PixelSink<u8> + PixelSource<u8>>(scene: &PreparedScene, sink: &mut 
 #[inline(never)]
 #[cfg(feature = "progressive")]
 fn render<S: PixelSink<u8> + PixelSource<u8>>(scene: &PreparedScene, sink: &mut S, statistics: &mut Passes) {
-    render_pga_progressive(scene, sink, statistics);
+    render_pga_progressive_sized::<scene::Number, S, { scene::OBJECT_COUNT }, FlashObjects, { scene::TREE_DEPTH }, { scene::ANTIALIAS_ROW }>(scene, sink, statistics);
 }
 
 #[cfg(not(feature = "progressive"))]

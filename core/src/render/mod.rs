@@ -16,7 +16,7 @@ mod surface;
 mod trace;
 
 pub use primary::{nearest_hit, nearest_hit_cached, NearestHit};
-pub use progressive::{render_pga_pass, render_pga_progressive, render_rgb_pass, render_rgb_progressive, traced_in_pass, PassStatistics, PASSES, PASS_SIZES};
+pub use progressive::{render_pga_pass, render_pga_progressive, render_pga_progressive_sized, render_rgb_pass, render_rgb_progressive, traced_in_pass, PassStatistics, PASSES, PASS_SIZES};
 pub use shadow::{in_shadow, in_shadow_cached, in_shadow_culled, shadow_origin, ShadowCache, ShadowCulling};
 pub use statistics::Statistics;
 pub use streamed::{render_pga_streamed, render_pga_streamed_sized, render_rgb_streamed};

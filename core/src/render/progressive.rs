@@ -60,10 +60,24 @@ where
     N: Number,
     S: PixelSink<u8>,
 {
+    render_pga_progressive_sized::<N, S, MAX_OBJECTS, O, { MAX_DEPTH as usize }, ANTIALIAS_ROW>(scene, sink, statistics);
+}
+
+/// [`render_pga_progressive`] with its stack sized for the scene (the firmware's), as
+/// [`super::render_pga_sized`]: a ray tree at most `DEPTH` generations deep and an antialiasing
+/// row of `ROW` corners.
+pub fn render_pga_progressive_sized<N, S, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize, const ROW: usize>(
+    scene: &Scene<N, MAX_OBJECTS, O>,
+    sink: &mut S,
+    statistics: &mut PassStatistics,
+) where
+    N: Number,
+    S: PixelSink<u8>,
+{
     with_shadow_culling(scene, |culling| {
         let mut cache = ShadowCache::default();
         for (pass, counts) in statistics.passes.iter_mut().enumerate() {
-            trace_pass(scene, sink, counts, pass, &mut cache, culling, scene.background, &PgaNodes { scene });
+            trace_pass::<N, u8, S, _, MAX_OBJECTS, O, DEPTH, ROW>(scene, sink, counts, pass, &mut cache, culling, scene.background, &PgaNodes { scene });
         }
     })
 }
@@ -77,7 +91,7 @@ where
     with_shadow_culling(scene, |culling| {
         let mut cache = ShadowCache::default();
         for (pass, counts) in statistics.passes.iter_mut().enumerate() {
-            trace_pass(scene, sink, counts, pass, &mut cache, culling, scene.background_rgb(), &RgbNodes { scene });
+            trace_pass::<N, Rgb888, S, _, MAX_OBJECTS, O, { MAX_DEPTH as usize }, ANTIALIAS_ROW>(scene, sink, counts, pass, &mut cache, culling, scene.background_rgb(), &RgbNodes { scene });
         }
     })
 }
@@ -91,7 +105,7 @@ where
     S: PixelSink<u8>,
 {
     with_shadow_culling(scene, |culling| {
-        trace_pass(scene, sink, statistics, pass, &mut ShadowCache::default(), culling, scene.background, &PgaNodes { scene });
+        trace_pass::<N, u8, S, _, MAX_OBJECTS, O, { MAX_DEPTH as usize }, ANTIALIAS_ROW>(scene, sink, statistics, pass, &mut ShadowCache::default(), culling, scene.background, &PgaNodes { scene });
     })
 }
 
@@ -102,7 +116,7 @@ where
     S: PixelSink<Rgb888>,
 {
     with_shadow_culling(scene, |culling| {
-        trace_pass(scene, sink, statistics, pass, &mut ShadowCache::default(), culling, scene.background_rgb(), &RgbNodes { scene });
+        trace_pass::<N, Rgb888, S, _, MAX_OBJECTS, O, { MAX_DEPTH as usize }, ANTIALIAS_ROW>(scene, sink, statistics, pass, &mut ShadowCache::default(), culling, scene.background_rgb(), &RgbNodes { scene });
     })
 }
 
@@ -115,7 +129,7 @@ pub fn traced_in_pass(pass: usize, column: u16, row: u16) -> bool {
 }
 
 #[allow(clippy::too_many_arguments)]
-fn trace_pass<N, P, S, M, const MAX_OBJECTS: usize, O: Objects<N>>(
+fn trace_pass<N, P, S, M, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize, const ROW: usize>(
     scene: &Scene<N, MAX_OBJECTS, O>,
     sink: &mut S,
     statistics: &mut Statistics,
@@ -134,7 +148,7 @@ fn trace_pass<N, P, S, M, const MAX_OBJECTS: usize, O: Objects<N>>(
     // An antialiased image has no coarse passes: its last pass renders it whole.
     if let Some(antialias) = scene.antialias {
         if size == 1 {
-            render_antialiased::<N, P, S, M, MAX_OBJECTS, O, { MAX_DEPTH as usize }, ANTIALIAS_ROW>(scene, antialias, sink, statistics, 0..antialias.image.height(), mode, culling);
+            render_antialiased::<N, P, S, M, MAX_OBJECTS, O, DEPTH, ROW>(scene, antialias, sink, statistics, 0..antialias.image.height(), mode, culling);
         }
         return;
     }
@@ -156,7 +170,7 @@ fn trace_pass<N, P, S, M, const MAX_OBJECTS: usize, O: Objects<N>>(
                 background
             } else {
                 let pixel = camera.pixel(column, row);
-                pixel_value::<N, M, MAX_OBJECTS, O, { MAX_DEPTH as usize }>(scene, mode, pixel, statistics, cache, culling).unwrap_or(background)
+                pixel_value::<N, M, MAX_OBJECTS, O, DEPTH>(scene, mode, pixel, statistics, cache, culling).unwrap_or(background)
             };
             if size == 1 {
                 sink.set_pixel(column, row, value);
