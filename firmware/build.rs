@@ -29,7 +29,7 @@
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
-use microtrace::scene::{Optimizations, Primitive, SceneDescription};
+use microtrace::model::{Optimizations, Primitive, SceneDescription};
 
 /// Objects a scene file may hold at build time; the firmware itself is sized by the scene.
 const PARSE_CAPACITY: usize = 512;
@@ -63,7 +63,7 @@ fn main() {
     let text = std::fs::read(&scene_path)
         .unwrap_or_else(|error| fail(&format!("cannot read the scene {}: {error}", scene_path.display())));
     let mut description = microtrace::parser::parse::<PARSE_CAPACITY>(&text).unwrap_or_else(|error| match error.kind {
-        microtrace::parser::SceneErrorKind::TooManyObjects { .. } => fail(&format!(
+        microtrace::model::SceneErrorKind::TooManyObjects { .. } => fail(&format!(
             "{} objects at build time (PARSE_CAPACITY in firmware/build.rs); no board this firmware runs on has the RAM for so many",
             in_file(&scene_path, &error)
         )),
@@ -114,7 +114,7 @@ fn env(name: &str) -> Option<String> {
 
 /// A scene error in the one format of every scene error (docs/bad-input.md): `FILE:line N:
 /// reason`, or `FILE: reason` for an error tied to no line.
-fn in_file(path: &Path, error: &microtrace::parser::SceneError) -> String {
+fn in_file(path: &Path, error: &microtrace::model::SceneError) -> String {
     if error.line == 0 {
         format!("{}: {error}", path.display())
     } else {
@@ -124,7 +124,7 @@ fn in_file(path: &Path, error: &microtrace::parser::SceneError) -> String {
 
 /// Why the scene could not be prepared ahead.
 enum Ahead {
-    Scene(microtrace::parser::SceneError),
+    Scene(microtrace::model::SceneError),
     Write(std::fmt::Error),
 }
 

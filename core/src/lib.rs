@@ -4,6 +4,8 @@
 //! Module map (thesis sections in brackets):
 //! - [`number`]: the number trait the whole tracer is generic over (f64, f32, fixed point).
 //! - [`geometry`]: vectors, rays and the row-vector affine transforms of §1.5.1.
+//! - [`model`]: what a scene is made of: primitives, view, materials, lights, colours, the
+//!   scene as written, and the error type. Imports nothing above `geometry`.
 //! - [`shapes`]: the four unit primitives of §4.2.5 with `intersect` and `occluded` (§4.5–4.6).
 //! - [`camera`]: window/viewport mapping and primary rays (§4.3).
 //! - [`shading`]: the PGA and RGB shading models, look-up table, dither, roughness (§4.2.4).
@@ -22,6 +24,7 @@
 pub mod camera;
 pub mod formats;
 pub mod geometry;
+pub mod model;
 pub mod number;
 pub mod optimize;
 pub mod parser;

@@ -378,7 +378,8 @@ fn ray_sphere_accuracy_benchmark() {
 
 use microtrace::pixel::FrameBuffer;
 use microtrace::render::{render_pga, Statistics};
-use microtrace::scene::{Scene, SceneDescription};
+use microtrace::model::SceneDescription;
+use microtrace::scene::Scene;
 
 const MAX_OBJECTS: usize = 512;
 

@@ -10,7 +10,7 @@ use embedded_graphics::pixelcolor::GrayColor;
 use microtrace::pixel::{grey_level, PixelSink};
 #[cfg(any(feature = "framebuffer", feature = "progressive"))]
 use microtrace::pixel::{FrameBuffer, PixelSource};
-use microtrace::shading::Palette;
+use microtrace::model::Palette;
 
 #[cfg(not(any(feature = "framebuffer", feature = "progressive")))]
 use crate::semihosting::HostFile;

@@ -27,8 +27,8 @@
 
 use core::mem::size_of;
 
-use microtrace::optimize::shadow::{BlockerSet, DirectionChord, LightReach};
-use microtrace::scene::MAX_LIGHTS;
+use microtrace::optimize::shadow_culling::{BlockerSet, DirectionChord, LightReach};
+use microtrace::model::MAX_LIGHTS;
 
 use crate::scene;
 

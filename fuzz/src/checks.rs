@@ -10,10 +10,13 @@ use std::fmt::Write as _;
 
 use microtrace::formats::{self, lut, DecodedEvent, ImageFormat};
 use microtrace::number::{F32Micro, Fixed, Fixed16, Number, SoftFloat};
-use microtrace::parser::{parse, SceneError};
-use microtrace::pixel::{FrameBuffer, Rgb888};
+use microtrace::model::SceneError;
+use microtrace::parser::parse;
+use microtrace::model::Rgb888;
+use microtrace::pixel::FrameBuffer;
 use microtrace::render::{render_pga, render_rgb, Statistics};
-use microtrace::scene::{Optimizations, Scene, SceneDescription};
+use microtrace::model::{Optimizations, SceneDescription};
+use microtrace::scene::Scene;
 
 /// The host's capacity (`microtrace render` holds 512 objects).
 pub const PARSE_CAPACITY: usize = 512;

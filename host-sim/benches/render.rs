@@ -5,7 +5,8 @@
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use microtrace::pixel::FrameBuffer;
 use microtrace::render::{render_pga, Statistics};
-use microtrace::scene::{Optimizations, Scene};
+use microtrace::model::Optimizations;
+use microtrace::scene::Scene;
 use microtrace_sim::scene_file::{self, HOST_MAX_OBJECTS};
 
 fn renders(c: &mut Criterion) {

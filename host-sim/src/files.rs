@@ -11,9 +11,9 @@ use std::sync::atomic::{AtomicU32, Ordering};
 use std::sync::{Mutex, MutexGuard};
 
 use microtrace::formats::{self, lut, pga_compressed, pga_uncompressed, rgb, DecodedEvent, FormatError};
-use microtrace::pixel::Rgb888;
-use microtrace::scene::Viewport;
-use microtrace::shading::Palette;
+use microtrace::model::Rgb888;
+use microtrace::model::Viewport;
+use microtrace::model::Palette;
 
 /// The largest image `decode_image_file` accepts: the `--size` limit, 8192 x 8192 pixels. A 0xD9
 /// file's bounding box is not bounded by its length (two short records far apart), so this
@@ -325,7 +325,7 @@ pub fn decode_image_file(path: &Path, palette: Option<&Palette>) -> io::Result<D
 mod tests {
     use super::*;
     use microtrace::formats::ImageFormat;
-    use microtrace::shading::Rgb4;
+    use microtrace::model::Rgb4;
 
     /// A fresh, empty directory under the system's temp dir.
     fn scratch(name: &str) -> PathBuf {

@@ -4,7 +4,7 @@
 //! A palette index is `group << 4 | shade`: the high nibble picks one of 16 colour groups, the
 //! low nibble one of 16 shades in it.
 
-use microtrace::shading::Palette;
+use microtrace::model::Palette;
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ImageDifference {

@@ -6,12 +6,14 @@ use std::time::{Duration, Instant};
 
 use anyhow::bail;
 use clap::ValueEnum;
-use microtrace::pixel::{FrameBuffer, Rgb888};
+use microtrace::model::Rgb888;
+use microtrace::pixel::FrameBuffer;
 use microtrace::render::{render_pga, render_pga_progressive, render_pga_rows, render_rgb, render_rgb_progressive, render_rgb_rows, PassStatistics, Statistics, PASSES};
 use microtrace::number::Number;
-use microtrace::parser::SceneError;
-use microtrace::scene::{Scene, Viewport};
-use microtrace::shading::Palette;
+use microtrace::model::SceneError;
+use microtrace::model::Viewport;
+use microtrace::scene::Scene;
+use microtrace::model::Palette;
 
 use crate::number_type::NumberType;
 use crate::parallel::render_in_bands;

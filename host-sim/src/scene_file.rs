@@ -5,8 +5,8 @@ use std::fmt;
 use std::path::{Path, PathBuf};
 
 use anyhow::Context;
-use microtrace::parser::SceneError;
-use microtrace::scene::{Optimizations, SceneDescription};
+use microtrace::model::SceneError;
+use microtrace::model::{Optimizations, SceneDescription};
 
 /// How many objects a host build holds (the firmware sizes this to each scene).
 pub const HOST_MAX_OBJECTS: usize = 512;

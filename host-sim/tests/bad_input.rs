@@ -8,9 +8,11 @@ use std::process::Command;
 
 use clap::ValueEnum;
 use microtrace::formats;
-use microtrace::parser::{parse, SceneError, SceneErrorKind};
+use microtrace::model::{SceneError, SceneErrorKind};
+use microtrace::parser::parse;
 use microtrace::pixel::FrameBuffer;
-use microtrace::scene::{Primitive, Scene};
+use microtrace::model::Primitive;
+use microtrace::scene::Scene;
 use microtrace_sim::number_type::NumberType;
 use microtrace_sim::scene_file::{in_file, SceneFileError, HOST_MAX_OBJECTS};
 use microtrace_sim::with_number_type;

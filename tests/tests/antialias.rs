@@ -3,9 +3,11 @@
 //! the image as it is.
 
 use microtrace::number::{Fixed, Number, SoftFloat};
-use microtrace::pixel::{FrameBuffer, Rgb888};
+use microtrace::model::Rgb888;
+use microtrace::pixel::FrameBuffer;
 use microtrace::render::{render_pga, render_pga_rows, render_rgb, Statistics};
-use microtrace::scene::{Optimizations, Scene, SceneDescription};
+use microtrace::model::{Optimizations, SceneDescription};
+use microtrace::scene::Scene;
 
 const CAPACITY: usize = 64;
 

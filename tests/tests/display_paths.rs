@@ -16,8 +16,10 @@ use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 use microtrace::pixel::{FrameBuffer, LutColour, LutGrey, OrderedDither, RowDisplaySink};
 use microtrace::render::{render_pga, Statistics};
-use microtrace::scene::{Scene, SceneDescription};
-use microtrace::shading::{Palette, DITHER_4X4};
+use microtrace::model::SceneDescription;
+use microtrace::scene::Scene;
+use microtrace::model::Palette;
+use microtrace::shading::DITHER_4X4;
 
 const CAPACITY: usize = 64;
 

@@ -20,7 +20,8 @@ use std::process::Command;
 use embedded_graphics::pixelcolor::GrayColor;
 use microtrace::pixel::FrameBuffer;
 use microtrace::render::{render_pga, Statistics};
-use microtrace::scene::{Scene, SceneDescription};
+use microtrace::model::SceneDescription;
+use microtrace::scene::Scene;
 // The budget of firmware/README.md for the lm3s6965evb (64 KB RAM, 256 KB flash): static RAM
 // (the prepared scene with its acceleration structures: no framebuffer, no OLED copy, the rows
 // streamed) plus peak stack leaves 40 KB of the RAM free.

@@ -21,10 +21,11 @@
 use microtrace::camera::PixelPosition;
 use microtrace::geometry::{Ray, Vector3};
 use microtrace::number::{F32Micro, Fixed, Fixed16, Number, SoftFloat};
-use microtrace::parser::{SceneError, SceneErrorKind};
+use microtrace::model::{SceneError, SceneErrorKind};
 use microtrace::pixel::FrameBuffer;
 use microtrace::render::{in_shadow, nearest_hit, render_pga, shade_pixel, shadow_origin, ShadedPixel, Statistics};
-use microtrace::scene::{PreparedLight, Scene, SceneDescription};
+use microtrace::model::SceneDescription;
+use microtrace::scene::{PreparedLight, Scene};
 use microtrace::shapes::Interval;
 
 const CAPACITY: usize = 16;

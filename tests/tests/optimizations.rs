@@ -11,9 +11,8 @@ use microtrace::optimize::extents::Extent;
 use microtrace::optimize::Acceleration;
 use microtrace::pixel::FrameBuffer;
 use microtrace::render::{render_pga, render_rgb, Statistics};
-use microtrace::scene::{
-    Light, Material, ObjectDescription, Optimizations, Primitive, Projection, Scene, SceneDescription, Viewport, Window,
-};
+use microtrace::model::{Light, Material, ObjectDescription, Optimizations, Primitive, Projection, SceneDescription, Viewport, Window};
+use microtrace::scene::Scene;
 
 const CAPACITY: usize = 64;
 

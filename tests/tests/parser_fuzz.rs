@@ -7,8 +7,9 @@
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::time::{Duration, Instant};
 
-use microtrace::parser::{parse, SceneError, SceneErrorKind};
-use microtrace::scene::{Light, Projection, SceneDescription};
+use microtrace::model::{SceneError, SceneErrorKind};
+use microtrace::parser::parse;
+use microtrace::model::{Light, Projection, SceneDescription};
 
 const CAPACITY: usize = 512;
 type Scene = SceneDescription<CAPACITY>;

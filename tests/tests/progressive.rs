@@ -6,7 +6,8 @@
 use microtrace::number::Number;
 use microtrace::pixel::FrameBuffer;
 use microtrace::render::{render_pga, render_pga_progressive, render_rgb, render_rgb_progressive, traced_in_pass, PassStatistics, Statistics, PASSES};
-use microtrace::scene::{Optimizations, Scene, SceneDescription};
+use microtrace::model::{Optimizations, SceneDescription};
+use microtrace::scene::Scene;
 
 const CAPACITY: usize = 64;
 

@@ -2,10 +2,12 @@
 //! type, what must not change, and the secondary rays' bounding spheres against brute force.
 
 use microtrace::number::{F32Micro, Fixed, Fixed16, Number, SoftFloat};
-use microtrace::pixel::{FrameBuffer, Rgb888};
+use microtrace::model::Rgb888;
+use microtrace::pixel::FrameBuffer;
 use microtrace::render::{render_pga, render_rgb, Statistics};
 use microtrace::optimize::space_grid::SpaceGrid;
-use microtrace::scene::{Optimizations, Scene, SceneDescription};
+use microtrace::model::{Optimizations, SceneDescription};
+use microtrace::scene::Scene;
 
 const CAPACITY: usize = 80;
 
@@ -19,7 +21,7 @@ fn scene_file(name: &str) -> SceneDescription<CAPACITY> {
 }
 
 fn sized(mut scene: SceneDescription<CAPACITY>, width: u16, height: u16) -> SceneDescription<CAPACITY> {
-    scene.viewport = microtrace::scene::Viewport { x1: 0, x2: width - 1, y1: 0, y2: height - 1 };
+    scene.viewport = microtrace::model::Viewport { x1: 0, x2: width - 1, y1: 0, y2: height - 1 };
     scene
 }
 

@@ -10,7 +10,8 @@
 
 use std::path::{Path, PathBuf};
 
-use microtrace::parser::{parse, SceneError, SceneErrorKind};
+use microtrace::model::{SceneError, SceneErrorKind};
+use microtrace::parser::parse;
 use microtrace::scene::Scene;
 
 const CAPACITY: usize = 16;

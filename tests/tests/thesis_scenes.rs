@@ -7,7 +7,8 @@
 use microtrace::number::{Fixed, Number, SoftFloat};
 use microtrace::pixel::FrameBuffer;
 use microtrace::render::{render_pga, Statistics};
-use microtrace::scene::{Scene, SceneDescription};
+use microtrace::model::SceneDescription;
+use microtrace::scene::Scene;
 
 const CAPACITY: usize = 64;
 

@@ -8,7 +8,7 @@ use std::process::{Command, Stdio};
 use std::sync::Mutex;
 use std::time::Duration;
 
-use microtrace::scene::{Primitive, SceneDescription};
+use microtrace::model::{Primitive, SceneDescription};
 
 use crate::elf;
 use crate::oled;
@@ -285,7 +285,7 @@ fn check_options(options: &FirmwareOptions) -> Result<(), String> {
     }
     let optimizations = options.optimizations.as_str();
     if optimizations != "scene" {
-        if let Err(name) = microtrace::scene::Optimizations::from_list(optimizations) {
+        if let Err(name) = microtrace::model::Optimizations::from_list(optimizations) {
             return Err(format!("unknown optimization `{name}` in --opt (scene, all, none, or a list of pixelbuffer,extents,grid,sortlist)"));
         }
     }
@@ -315,7 +315,7 @@ fn parse_scene(scene: &Path) -> Result<Box<SceneDescription<FIRMWARE_SCENE_CAPAC
     let description = microtrace::parser::parse::<FIRMWARE_SCENE_CAPACITY>(&text).map_err(|error| {
         let message = if error.line == 0 { format!("{}: {error}", scene.display()) } else { format!("{}:{error}", scene.display()) };
         match error.kind {
-            microtrace::parser::SceneErrorKind::TooManyObjects { .. } => format!(
+            microtrace::model::SceneErrorKind::TooManyObjects { .. } => format!(
                 "{message} objects at build time (PARSE_CAPACITY in firmware/build.rs); no board this firmware runs on has the RAM for so many"
             ),
             _ => message,

@@ -5,7 +5,8 @@
 
 use microtrace::number::{F32Micro, Fixed, Fixed16, Number, SoftFloat};
 use microtrace::optimize::ObjectBounds;
-use microtrace::scene::{Optimizations, Scene, SceneDescription};
+use microtrace::model::{Optimizations, SceneDescription};
+use microtrace::scene::Scene;
 
 use crate::firmware::FIRMWARE_SCENE_CAPACITY;
 

@@ -2,7 +2,7 @@
 //! firmware's 128x64 OLED). The whole original window stays in view: it is extended about its
 //! centre along one axis so that the pixel spacing is the same in x and y (square pixels).
 
-use crate::scene::{SceneDescription, Viewport};
+use crate::model::{SceneDescription, Viewport};
 
 impl<const MAX_OBJECTS: usize> SceneDescription<MAX_OBJECTS> {
     /// Sets the viewport to `width` x `height` pixels (both at least 1) and widens the window
@@ -31,7 +31,7 @@ impl<const MAX_OBJECTS: usize> SceneDescription<MAX_OBJECTS> {
 
 #[cfg(test)]
 mod tests {
-    use crate::scene::{SceneDescription, Window};
+    use crate::model::{SceneDescription, Window};
 
     #[test]
     fn wide_display_extends_the_window_horizontally() {

@@ -9,7 +9,7 @@
 
 use crate::geometry::{Ray, Vector3};
 use crate::number::Number;
-use crate::scene::{Projection, Viewport, Window};
+use crate::model::{Projection, Viewport, Window};
 
 /// Where a pixel is: image coordinates (row 0 at the top) and the thesis's screen coordinates
 /// (y up), which the dither and roughness use.

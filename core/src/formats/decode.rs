@@ -3,9 +3,10 @@
 //! `loadpgafile` ignored).
 
 use super::{le16, pga_compressed, pga_uncompressed, rgb, Axis, FormatError, FormatErrorKind, HEADER_LEN};
-use crate::pixel::{PixelSink, Rgb888};
-use crate::scene::Viewport;
-use crate::shading::Palette;
+use crate::model::Rgb888;
+use crate::pixel::PixelSink;
+use crate::model::Viewport;
+use crate::model::Palette;
 
 /// The three image formats, told apart by their first byte.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

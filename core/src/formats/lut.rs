@@ -5,7 +5,7 @@
 //! The image files do not contain the LUT.
 
 use super::{FormatError, FormatErrorKind};
-use crate::shading::{Palette, Rgb4};
+use crate::model::{Palette, Rgb4};
 
 /// The file's length: 256 words.
 pub const LEN: usize = 512;

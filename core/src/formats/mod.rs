@@ -29,7 +29,7 @@ pub mod rgb;
 pub use decode::{decode, decode_indices_into, decode_rgb_into, identify, inspect, DecodedEvent, ImageFormat, ImageInfo};
 pub use error::{Axis, FormatError, FormatErrorKind};
 
-use crate::scene::Viewport;
+use crate::model::Viewport;
 
 /// The length of the 9-byte header shared by the uncompressed PGA and the RGB formats.
 pub const HEADER_LEN: usize = 9;

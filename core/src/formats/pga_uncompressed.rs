@@ -10,7 +10,7 @@
 //!                each row x = vx1..vx2
 //! ```
 
-use crate::scene::Viewport;
+use crate::model::Viewport;
 
 /// The id byte.
 pub const ID: u8 = 0xFF;

@@ -8,7 +8,7 @@
 //! The thesis's `rgbtrace` allocated its row buffer as `3*vx2 - vx1 + 1` bytes, two bytes short
 //! when vx1 = 0 (§11 B9); a row here is always 3·(vx2 − vx1 + 1) bytes.
 
-use crate::scene::Viewport;
+use crate::model::Viewport;
 
 /// The id byte.
 pub const ID: u8 = 0x00;

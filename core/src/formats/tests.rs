@@ -8,8 +8,9 @@ use std::vec::Vec;
 
 use super::pga_compressed::{compress_row, max_compressed_row_len};
 use super::*;
-use crate::pixel::{FrameBuffer, PixelSink, Rgb888};
-use crate::shading::{Palette, Rgb4};
+use crate::model::Rgb888;
+use crate::pixel::{FrameBuffer, PixelSink};
+use crate::model::{Palette, Rgb4};
 
 /// A tiny deterministic generator (xorshift32).
 struct XorShift(u32);

@@ -12,7 +12,7 @@
 
 use crate::geometry::{Matrix4, Vector3};
 use crate::number::Number;
-use crate::scene::Primitive;
+use crate::model::Primitive;
 
 /// A world-space sphere holding an object.
 #[derive(Clone, Copy, Debug, PartialEq)]

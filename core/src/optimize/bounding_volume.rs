@@ -5,12 +5,18 @@
 
 use crate::geometry::{AffineTransform, Matrix4};
 use crate::number::Number;
-use crate::scene::Primitive;
+use crate::model::Primitive;
 
-use super::projection::View;
 
 /// Sides of the polygons circumscribed about the circles of spheres, cylinders and cones.
 pub const SIDES: usize = 16;
+
+/// Where primary rays come from, as the silhouettes need it (in `f64`).
+#[derive(Clone, Copy, Debug)]
+pub enum View {
+    Parallel { direction: [f64; 3] },
+    Perspective { eye: [f64; 3] },
+}
 
 /// The vertices of the regular `SIDES`-gon circumscribing the unit circle: (cos, sin) of
 /// 2πk/16 grown by 1/cos(π/16) and a relative 1e-9 (which covers these literals' last-bit
@@ -40,7 +46,7 @@ const RING: [(f64, f64); SIDES] = {
 /// Most points a silhouette is built from (8, the volume's vertices, without the
 /// `acceleration-tables` feature, which then also leaves out the tight silhouettes to keep the
 /// stack small).
-pub const MAX_POINTS: usize = if super::TABLES { 2 * SIDES } else { 8 };
+pub const MAX_POINTS: usize = if super::build_options::TABLES { 2 * SIDES } else { 8 };
 
 /// The 8 vertices of each primitive's unit volume, in the thesis's order (digest §8.1).
 pub const VOLUMES: [[[f64; 3]; 8]; 4] = [

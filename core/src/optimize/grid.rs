@@ -25,7 +25,7 @@ use super::projection::{Projected, Screen};
 /// Cells across and down (`GRIDCOL`, `GRIDROW`).
 pub const GRID_SIZE: u16 = 20;
 /// No cells at all without the `acceleration-tables` feature (the grid is then inactive).
-const CELLS: usize = if super::TABLES { GRID_SIZE as usize * GRID_SIZE as usize } else { 0 };
+const CELLS: usize = if super::build_options::TABLES { GRID_SIZE as usize * GRID_SIZE as usize } else { 0 };
 /// Pool entries per object: an object may overlap this many cells on average (24), or what
 /// the build's `MICROTRACE_GRID_ENTRIES_PER_OBJECT` says: the firmware's xtask sets it to the
 /// entries the scene's grid holds at its view, divided by its objects and rounded up, so that
@@ -157,7 +157,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Grid<N, MAX_OBJECTS> {
             if extent.is_empty() {
                 return;
             }
-            let shape = if cells == CellShape::Polygons && super::SILHOUETTES { polygon(usize::from(object)) } else { Projected::Whole };
+            let shape = if cells == CellShape::Polygons && super::build_options::SILHOUETTES { polygon(usize::from(object)) } else { Projected::Whole };
             let stadium = if cells == CellShape::Octagons { stadium(usize::from(object)) } else { None };
             let (width, height) = (cell_width.get(), cell_height.get());
             for cell_row in extent.first_row / cell_height..=(extent.last_row / cell_height).min(GRID_SIZE - 1) {

@@ -8,10 +8,10 @@
 //! covering the whole screen.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-use super::bounding_volume::{ObjectGeometry, MAX_POINTS};
+use super::bounding_volume::{ObjectGeometry, View, MAX_POINTS};
 use crate::camera::Camera;
 use crate::number::Number;
-use crate::scene::Primitive;
+use crate::model::Primitive;
 
 /// The camera's mapping in `f64`, read back from the number type's own values so that it is
 /// the mapping the primary rays actually use.
@@ -38,12 +38,6 @@ pub enum Projected {
     Whole,
     /// No primary ray can reach it.
     Invisible,
-}
-
-#[derive(Clone, Copy, Debug)]
-pub enum View {
-    Parallel { direction: [f64; 3] },
-    Perspective { eye: [f64; 3] },
 }
 
 /// Margin in pixels added around every projected shape: covers the rounding of the number
@@ -148,7 +142,7 @@ impl Screen {
             return Projected::Invisible;
         }
         let mut world = [[0.0; 3]; MAX_POINTS];
-        let count = if tight && super::TABLES {
+        let count = if tight && super::build_options::TABLES {
             let Some(count) = geometry.silhouette_points(&self.view, &mut world) else { return Projected::Whole };
             count
         } else {
@@ -460,7 +454,7 @@ impl Polygon {
 mod tests {
     use super::*;
     use crate::geometry::{AffineTransform, Matrix4};
-    use crate::scene::{Projection, Viewport, Window};
+    use crate::model::{Projection, Viewport, Window};
 
     struct XorShift(u64);
 

@@ -16,8 +16,8 @@
 //! when the bound is strictly greater than the nearest `t`: an equal `t` may still win the tie
 //! for a lower object number.
 
-use super::bounding_volume::{dot, largest_semi_axis, ObjectGeometry};
-use super::projection::{Screen, View};
+use super::bounding_volume::{dot, largest_semi_axis, ObjectGeometry, View};
+use super::projection::Screen;
 
 /// The lower bound of `t` for one object (already lowered by the rounding margin); `None` when
 /// no bound is known (the object is then tested first and never ends the loop).
@@ -97,7 +97,7 @@ pub fn sort_by_bound<T: PartialOrd + Copy>(order: &mut [u16], bound: impl Fn(usi
 /// less the radius. `None` for other primitives or when no bound is found. Lowered for
 /// rounding like [`depth_bound`].
 pub fn block_depth_bound(screen: &Screen, geometry: &ObjectGeometry, columns: (u16, u16), rows: (u16, u16)) -> Option<f64> {
-    use crate::scene::Primitive;
+    use crate::model::Primitive;
     if !matches!(geometry.primitive, Primitive::Cylinder | Primitive::Cone) {
         return None;
     }

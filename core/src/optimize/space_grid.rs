@@ -17,7 +17,7 @@
 use crate::geometry::{Ray, Vector3};
 use crate::number::Number;
 use crate::optimize::bounding_sphere::BoundingSphere;
-use crate::optimize::shadow::BlockerSet;
+use crate::optimize::shadow_culling::BlockerSet;
 
 /// Cells per axis at most.
 pub const MAX_RESOLUTION: usize = 8;

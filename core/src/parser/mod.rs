@@ -39,15 +39,14 @@
 //!   argument count, then the arguments from left to right.
 //! - Global statements may appear anywhere, also between objects; the last one wins.
 
-mod error;
 mod number;
 #[cfg(test)]
 mod tests;
 
-pub use error::{SceneError, SceneErrorKind, Token, TOKEN_EXCERPT_BYTES};
 
-use crate::scene::{Antialias, Light, LightSource, ObjectDescription, Optimizations, Primitive, Projection, SceneDescription, Viewport, Window, MAX_DEPTH, MAX_LIGHTS};
-use crate::shading::Rgb4;
+use crate::model::{SceneError, SceneErrorKind, Token};
+use crate::model::{Antialias, Light, LightSource, ObjectDescription, Optimizations, Primitive, Projection, SceneDescription, Viewport, Window, MAX_DEPTH, MAX_LIGHTS};
+use crate::model::Rgb4;
 
 /// The most arguments any fixed-arity statement takes (`group N R G B up`).
 const MAX_ARGS: usize = 5;

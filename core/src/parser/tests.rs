@@ -1,11 +1,12 @@
 extern crate std;
 
+use crate::model::{SceneError, SceneErrorKind, TOKEN_EXCERPT_BYTES, Token};
 use std::string::{String, ToString};
 use std::vec::Vec;
 
 use super::*;
-use crate::scene::{Light, Material, Optimizations, Primitive, Projection, SceneDescription, Viewport, Window};
-use crate::shading::{Palette, Rgb4};
+use crate::model::{Light, Material, Optimizations, Primitive, Projection, SceneDescription, Viewport, Window};
+use crate::model::{Palette, Rgb4};
 
 type Scene = SceneDescription<512>;
 

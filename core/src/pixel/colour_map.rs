@@ -5,7 +5,7 @@ use core::marker::PhantomData;
 
 use embedded_graphics_core::pixelcolor::{PixelColor, Rgb888 as EgRgb888};
 
-use crate::shading::Palette;
+use crate::model::Palette;
 
 /// A palette index -> a display colour.
 pub trait ColourMap {

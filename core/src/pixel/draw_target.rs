@@ -10,7 +10,7 @@ use embedded_graphics_core::primitives::Rectangle;
 use embedded_graphics_core::Pixel;
 
 use super::{grey_level, lut_colour, PixelSink};
-use crate::shading::Palette;
+use crate::model::Palette;
 
 /// Drives a colour `DrawTarget`: palette index -> LUT entry -> the target's colour.
 #[derive(Debug)]

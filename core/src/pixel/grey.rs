@@ -4,10 +4,10 @@
 use embedded_graphics_core::pixelcolor::Gray4;
 
 use super::ColourMap;
-use crate::shading::Palette;
+use crate::model::Palette;
 
 /// The grey level a palette index shows as on a 16-grey display: the look-up-table entry's
-/// integer Rec. 601 luma, 0..=15 ([`crate::shading::Rgb4::luminance`]).
+/// integer Rec. 601 luma, 0..=15 ([`crate::model::Rgb4::luminance`]).
 pub fn grey_level(palette: &Palette, index: u8) -> Gray4 {
     Gray4::new(palette.entry(index).luminance())
 }

@@ -33,9 +33,6 @@ pub use ordered_dither::{dither_colour, dither_lights, OrderedDither};
 #[cfg(feature = "embedded-graphics")]
 pub use row_display::RowDisplaySink;
 
-/// An RGB-mode pixel: 8 bits per channel.
-pub type Rgb888 = [u8; 3];
-
 /// Something that accepts pixels of type `P`: palette indices (`u8`) in PGA mode, [`Rgb888`]
 /// in RGB mode.
 pub trait PixelSink<P: Copy> {

@@ -1,5 +1,5 @@
 use super::*;
-use crate::shading::{Palette, Rgb4};
+use crate::model::{Palette, Rgb4};
 
 #[test]
 fn frame_buffer_writes_reads_and_ignores_outside_pixels() {

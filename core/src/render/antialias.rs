@@ -20,15 +20,21 @@ use core::ops::Range;
 
 use heapless::Vec;
 
-use super::progressive::RowCoverage;
-use super::shadow::{ShadowCache, ShadowCulling};
-use super::trace::{primary_surface_then, Mode};
+use super::fill::RowCoverage;
+use super::mode::Mode;
+use super::pixel_value::primary_surface_then;
+use super::shadow_ray::{ShadowCache, ShadowCulling};
 use super::Statistics;
 use crate::number::Number;
 use crate::pixel::PixelSink;
 use crate::scene::{Objects, PreparedAntialias, Scene};
 
 type Rgb = [u8; 3];
+
+/// How many corners an antialiased render keeps of a row ([`super::render_pga`], [`super::render_rgb`]): an
+/// image up to 2,048 pixels wide shares every corner (6 KB of stack); a wider one traces the
+/// corners beyond again.
+pub const ANTIALIAS_ROW: usize = 2049;
 
 /// One square of a pixel's subdivision: its top left sample, its side (in samples), its corners
 /// (top left, top right, bottom left, bottom right) and its level.

@@ -5,7 +5,7 @@
 //! With one light of intensity one and opaque objects this is the thesis's shading exactly:
 //! no multiplication by the intensity or the share is made.
 
-use super::shadow::{light_share, ShadowCache, ShadowCulling};
+use super::shadow_ray::{light_share, ShadowCache, ShadowCulling};
 use super::Statistics;
 use crate::geometry::Vector3;
 use crate::number::Number;
@@ -79,7 +79,7 @@ impl<N: Number, const MAX_OBJECTS: usize, O: Objects<N>> Hit<'_, N, MAX_OBJECTS,
         // A surface facing away from the light is unlit with or without a shadow ray.
         let faces_light = self.normal.dot(to_light) > N::ZERO;
         let share = if self.scene.shadows && faces_light {
-            let start = super::shadow_origin(self.point, self.normal);
+            let start = super::shadow_ray::shadow_origin(self.point, self.normal);
             light_share(self.scene, self.object, start, to_light, light_distance, statistics, last_blocker, culling)
         } else {
             N::ONE

@@ -22,13 +22,19 @@
 //! `row_done` is called for every row of a pass's band of blocks once the band is drawn, so each
 //! row is reported once per pass (four times in all); a display flushes there.
 
-use super::shadow::ShadowCache;
-use super::antialias::render_antialiased;
-use super::trace::{pixel_value, with_shadow_culling, Mode, PgaNodes, RgbNodes, ANTIALIAS_ROW};
-use super::{fill_volumes_rows, ShadowCulling, Statistics};
+use super::shadow_ray::ShadowCache;
+use super::antialias::{render_antialiased, ANTIALIAS_ROW};
+use super::mode::{Mode, PgaNodes, RgbNodes};
+use super::pixel_value::pixel_value;
+use super::shadow_tables::with_shadow_culling;
+use super::fill::RowCoverage;
+use super::shadow_ray::ShadowCulling;
+use super::Statistics;
 use crate::number::Number;
-use crate::pixel::{PixelSink, Rgb888};
-use crate::scene::{Objects, Scene, MAX_DEPTH};
+use crate::model::Rgb888;
+use crate::pixel::PixelSink;
+use crate::model::MAX_DEPTH;
+use crate::scene::{Objects, Scene};
 
 /// How many passes a progressive render makes.
 pub const PASSES: usize = 4;
@@ -183,85 +189,6 @@ fn trace_pass<N, P, S, M, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: 
         }
         for y in row..row + block_height {
             sink.row_done(y);
-        }
-    }
-}
-
-/// The Pixelbuffer's fill of one row, as spans: which of its pixels the normal render with
-/// Pixelbuffer traces (the rest hold the flood colour and become the background). Each object
-/// marks at most one span a row; should more come, the whole row counts as covered (a traced
-/// pixel outside the fill is the background anyway).
-pub(crate) struct RowCoverage<const MAX_OBJECTS: usize> {
-    spans: [(u16, u16); MAX_OBJECTS],
-    count: usize,
-    overflowed: bool,
-}
-
-impl<const MAX_OBJECTS: usize> RowCoverage<MAX_OBJECTS> {
-    /// No span yet: covers nothing.
-    pub(crate) const fn empty() -> Self {
-        Self { spans: [(0, 0); MAX_OBJECTS], count: 0, overflowed: false }
-    }
-
-    pub(crate) fn of<N: Number, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, row: u16) -> Self {
-        let mut coverage = Self::empty();
-        fill_volumes_rows(scene, &mut coverage, true, false, row..row.saturating_add(1));
-        coverage
-    }
-
-    pub(crate) fn covers(&self, column: u16) -> bool {
-        self.overflowed || self.spans.iter().take(self.count).any(|&(first, width)| column >= first && column - first < width)
-    }
-
-    /// The spans sorted by their first column (an insertion sort: a row has a few), or `None`
-    /// when there were more than the coverage holds and the whole row counts as covered. For the
-    /// streamed render (`super::streamed`), which walks them once a row instead of testing each
-    /// pixel against every span.
-    pub(crate) fn sorted_spans(&mut self) -> Option<&[(u16, u16)]> {
-        if self.overflowed {
-            return None;
-        }
-        let spans = self.spans.get_mut(..self.count)?;
-        for next in 1..spans.len() {
-            let Some(&moving) = spans.get(next) else { break };
-            let mut slot = next;
-            while let Some(&before) = slot.checked_sub(1).and_then(|previous| spans.get(previous)) {
-                if before.0 <= moving.0 {
-                    break;
-                }
-                if let Some(place) = spans.get_mut(slot) {
-                    *place = before;
-                }
-                slot -= 1;
-            }
-            if let Some(place) = spans.get_mut(slot) {
-                *place = moving;
-            }
-        }
-        Some(spans)
-    }
-}
-
-impl<const MAX_OBJECTS: usize> PixelSink<bool> for RowCoverage<MAX_OBJECTS> {
-    fn set_pixel(&mut self, x: u16, y: u16, filled: bool) {
-        self.mark_row(x, y, 1, filled);
-    }
-
-    fn fill_row(&mut self, x: u16, y: u16, width: u16, filled: bool) {
-        self.mark_row(x, y, width, filled);
-    }
-
-    /// The flood (`false`) comes first and covers nothing; each fill (`true`) is a span.
-    fn mark_row(&mut self, x: u16, _y: u16, width: u16, filled: bool) {
-        if !filled || width == 0 {
-            return;
-        }
-        match self.spans.get_mut(self.count) {
-            Some(span) => {
-                *span = (x, width);
-                self.count += 1;
-            }
-            None => self.overflowed = true,
         }
     }
 }

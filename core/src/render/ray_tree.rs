@@ -16,7 +16,7 @@ use heapless::Vec;
 
 use super::lights::direct_lighting;
 use super::secondary::nearest_secondary_hit;
-use super::shadow::{shadow_origin, ShadowCache, ShadowCulling};
+use super::shadow_ray::{shadow_origin, ShadowCache, ShadowCulling};
 use super::Statistics;
 use super::surface::{NodeColours, SurfacePoint};
 use crate::camera::PixelPosition;

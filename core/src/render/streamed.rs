@@ -26,13 +26,18 @@
 //! the `f64` silhouettes) each object's volume is projected once a row instead of once a frame.
 
 use super::antialias::render_antialiased;
-use super::progressive::RowCoverage;
-use super::shadow::ShadowCache;
-use super::trace::{pixel_value, with_shadow_culling, Mode, PgaNodes, RgbNodes, ANTIALIAS_ROW};
+use super::fill::RowCoverage;
+use super::shadow_ray::ShadowCache;
+use super::antialias::ANTIALIAS_ROW;
+use super::mode::{Mode, PgaNodes, RgbNodes};
+use super::pixel_value::pixel_value;
+use super::shadow_tables::with_shadow_culling;
 use super::Statistics;
 use crate::number::Number;
-use crate::pixel::{PixelSink, Rgb888};
-use crate::scene::{Objects, Scene, MAX_DEPTH};
+use crate::model::Rgb888;
+use crate::pixel::PixelSink;
+use crate::model::MAX_DEPTH;
+use crate::scene::{Objects, Scene};
 
 /// [`super::render_pga`] into a sink that is never read: each row written once and then done.
 pub fn render_pga_streamed<N, S, const MAX_OBJECTS: usize, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, statistics: &mut Statistics)

@@ -4,7 +4,7 @@
 use crate::camera::PixelPosition;
 use crate::geometry::{Ray, Vector3};
 use crate::number::Number;
-use crate::scene::PreparedMaterial;
+use crate::model::PreparedMaterial;
 use crate::shading::Lighting;
 
 /// How a node's colour is made in the render's mode: RGB channels on a 0..255 scale.

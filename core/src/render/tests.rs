@@ -3,7 +3,8 @@
 use super::*;
 use crate::geometry::Vector3;
 use crate::pixel::MockSink;
-use crate::scene::{Light, Material, ObjectDescription, Primitive, Projection, Scene, SceneDescription, Viewport, Window};
+use crate::model::{Light, Material, ObjectDescription, Primitive, Projection, SceneDescription, Viewport, Window};
+use crate::scene::Scene;
 
 /// A 5x5 image of the unit sphere seen along −z, centre pixel (2, 2) on the sphere's pole.
 fn sphere_scene(material: Material, light: Light) -> SceneDescription<4> {
@@ -115,7 +116,7 @@ fn rgb_mode_adds_light_and_reflects_one_minus_cmy() {
 fn statistics_count_pixels_rays_and_tests() {
     let mut description = sphere_scene(Material::default(), Light::Direction([0.0, 0.0, 1.0]));
     // Unoptimized: every pixel gets a ray and every ray tests the one object.
-    description.optimizations = crate::scene::Optimizations::NONE;
+    description.optimizations = crate::model::Optimizations::NONE;
     let scene = Scene::<f64, 4>::prepare(&description).unwrap();
     let mut sink = MockSink::<u8, 5, 5>::new(0);
     let mut statistics = Statistics::default();
@@ -133,7 +134,7 @@ fn statistics_count_pixels_rays_and_tests() {
 #[test]
 fn bands_render_the_same_pixels_as_the_whole_image() {
     let mut description = sphere_scene(matte(3, 1.0, 0.5, 0.3, 20.0), Light::Point([3.0, 4.0, 10.0]));
-    description.optimizations = crate::scene::Optimizations::ALL;
+    description.optimizations = crate::model::Optimizations::ALL;
     let scene = Scene::<f64, 4>::prepare(&description).unwrap();
     let mut whole = MockSink::<u8, 5, 5>::new(0);
     render_pga(&scene, &mut whole, &mut Statistics::default());

@@ -12,9 +12,11 @@ use crate::geometry::Vector3;
 use crate::number::Number;
 use crate::optimize::bounding_sphere::BoundingSphere;
 use crate::optimize::ObjectBounds;
-use crate::parser::{SceneError, SceneErrorKind};
-use crate::scene::{Objects, Optics, Optimizations, PreparedAntialias, PreparedLight, PreparedLightSource, Scene, MAX_LIGHTS};
-use crate::shading::{Palette, ShadingConstants};
+use crate::model::{SceneError, SceneErrorKind};
+use crate::model::{Optimizations, MAX_LIGHTS};
+use crate::scene::{Objects, Optics, PreparedAntialias, PreparedLight, PreparedLightSource, Scene};
+use crate::model::Palette;
+use crate::shading::ShadingConstants;
 
 /// The parts of a scene prepared ahead, as the firmware keeps them in flash.
 #[derive(Debug)]
@@ -92,7 +94,7 @@ pub fn write_prepared_ahead<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
     writeln!(out, "pub static OBJECTS_AHEAD: [microtrace::scene::Object<Number>; {count}] = [")?;
     for object in scene.objects.iter() {
         let columns = object.object_from_world.columns();
-        write!(out, "    microtrace::scene::Object {{ primitive: microtrace::scene::Primitive::{:?}, object_from_world: microtrace::geometry::AffineTransform::from_parts([", object.primitive)?;
+        write!(out, "    microtrace::scene::Object {{ primitive: microtrace::model::Primitive::{:?}, object_from_world: microtrace::geometry::AffineTransform::from_parts([", object.primitive)?;
         for column in columns {
             numbers(out, &column)?;
             write!(out, ", ")?;
@@ -100,7 +102,7 @@ pub fn write_prepared_ahead<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
         write!(out, "], ")?;
         numbers(out, &object.object_from_world.translation)?;
         let m = &object.material;
-        write!(out, "), material: microtrace::scene::PreparedMaterial {{ colour: {}, ka: ", m.colour)?;
+        write!(out, "), material: microtrace::model::PreparedMaterial {{ colour: {}, ka: ", m.colour)?;
         m.ka.write_literal(out)?;
         write!(out, ", kd: ")?;
         m.kd.write_literal(out)?;
@@ -115,13 +117,13 @@ pub fn write_prepared_ahead<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
     writeln!(out, "];")?;
     writeln!(out, "pub static BOUNDS_AHEAD: [microtrace::optimize::ObjectBounds<Number>; {}] = [", bounds.len())?;
     for b in bounds {
-        write!(out, "    microtrace::optimize::ObjectBounds {{ primitive: microtrace::scene::Primitive::{:?}, capsule: microtrace::optimize::capsule::Capsule {{ start: ", b.primitive)?;
+        write!(out, "    microtrace::optimize::ObjectBounds {{ primitive: microtrace::model::Primitive::{:?}, capsule: microtrace::optimize::capsule::Capsule {{ start: ", b.primitive)?;
         vector(out, b.capsule.start)?;
         write!(out, ", end: ")?;
         vector(out, b.capsule.end)?;
         write!(out, ", radius: ")?;
         b.capsule.radius.write_literal(out)?;
-        write!(out, " }}, shadow: microtrace::optimize::shadow::ShadowBound {{ centre: ")?;
+        write!(out, " }}, shadow: microtrace::optimize::shadow_culling::ShadowBound {{ centre: ")?;
         let s = &b.shadow;
         vector(out, s.centre)?;
         write!(out, ", axis: ")?;
@@ -134,15 +136,15 @@ pub fn write_prepared_ahead<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
     }
     writeln!(out, "];")?;
     write_tree_ahead(scene, out)?;
-    write!(out, "pub static PALETTE_AHEAD: microtrace::shading::Palette = microtrace::shading::Palette {{ entries: [")?;
+    write!(out, "pub static PALETTE_AHEAD: microtrace::model::Palette = microtrace::model::Palette {{ entries: [")?;
     for entry in scene.palette.entries.iter() {
-        write!(out, "microtrace::shading::Rgb4 {{ r: {}, g: {}, b: {} }}, ", entry.r, entry.g, entry.b)?;
+        write!(out, "microtrace::model::Rgb4 {{ r: {}, g: {}, b: {} }}, ", entry.r, entry.g, entry.b)?;
     }
     writeln!(out, "] }};")?;
     let camera = &scene.camera;
     let (origin, spacing, view_plane) = camera.sampling();
     let v = camera.viewport;
-    write!(out, "pub static AHEAD: microtrace::scene::ahead::PreparedAhead<'static, Number> = microtrace::scene::ahead::PreparedAhead {{\n    camera: microtrace::camera::Camera::from_parts(microtrace::scene::Viewport {{ x1: {}, x2: {}, y1: {}, y2: {} }}, ", v.x1, v.x2, v.y1, v.y2)?;
+    write!(out, "pub static AHEAD: microtrace::scene::ahead::PreparedAhead<'static, Number> = microtrace::scene::ahead::PreparedAhead {{\n    camera: microtrace::camera::Camera::from_parts(microtrace::model::Viewport {{ x1: {}, x2: {}, y1: {}, y2: {} }}, ", v.x1, v.x2, v.y1, v.y2)?;
     numbers(out, &origin)?;
     write!(out, ", ")?;
     numbers(out, &spacing)?;
@@ -170,7 +172,7 @@ pub fn write_prepared_ahead<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
     match scene.antialias {
         Some(a) => {
             let v = a.image;
-            write!(out, "Some(microtrace::scene::PreparedAntialias {{ image: microtrace::scene::Viewport {{ x1: {}, x2: {}, y1: {}, y2: {} }}, levels: {}, threshold: {} }}),", v.x1, v.x2, v.y1, v.y2, a.levels, a.threshold)?
+            write!(out, "Some(microtrace::scene::PreparedAntialias {{ image: microtrace::model::Viewport {{ x1: {}, x2: {}, y1: {}, y2: {} }}, levels: {}, threshold: {} }}),", v.x1, v.x2, v.y1, v.y2, a.levels, a.threshold)?
         }
         None => write!(out, "None,")?,
     }
@@ -195,7 +197,7 @@ pub fn write_prepared_ahead<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
     let o = scene.optimizations;
     writeln!(
         out,
-        " }},\n    background: {},\n    shadows: {},\n    dither: {},\n    optimizations: microtrace::scene::Optimizations {{ pixelbuffer: {}, extents: {}, grid: {}, sortlist: {} }},",
+        " }},\n    background: {},\n    shadows: {},\n    dither: {},\n    optimizations: microtrace::model::Optimizations {{ pixelbuffer: {}, extents: {}, grid: {}, sortlist: {} }},",
         scene.background, scene.shadows, scene.dither, o.pixelbuffer, o.extents, o.grid, o.sortlist
     )?;
     writeln!(out, "    palette: &PALETTE_AHEAD,\n    bounds: &BOUNDS_AHEAD,\n}};")

@@ -2,9 +2,7 @@
 //! number type yet) and the render-ready [`Scene`] prepared from it in a chosen number type.
 
 pub mod ahead;
-mod description;
 mod prepared;
 mod range;
 
-pub use description::*;
 pub use prepared::*;

@@ -5,6 +5,7 @@
 //!
 //! Storage is fixed at compile time: `MAX_OBJECTS` objects, no allocator.
 
+use crate::model::PreparedMaterial;
 use core::ops::Deref;
 
 use heapless::Vec;
@@ -17,24 +18,11 @@ use crate::optimize::bounding_sphere::BoundingSphere;
 #[cfg(feature = "ray-tree")]
 use crate::optimize::space_grid::SpaceGrid;
 use crate::optimize::{Acceleration, Tuning};
-use crate::parser::{SceneError, SceneErrorKind};
+use crate::model::{SceneError, SceneErrorKind};
 use crate::scene::range::{self, RayOrigins};
-use crate::scene::{Antialias, Light, ObjectDescription, Optimizations, Primitive, SceneDescription, Viewport, Window, MAX_LIGHTS};
-use crate::shading::{Palette, Rgb4, ShadingConstants};
-
-/// An object's surface constants in the number type.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct PreparedMaterial<N> {
-    pub colour: u8,
-    pub ka: N,
-    pub kd: N,
-    pub ks: N,
-    pub rnd: N,
-    /// The specular exponent rounded to an integer.
-    pub power: u32,
-    /// RGB mode: the fraction of red, green and blue reflected, `1 − cmy`.
-    pub reflectance: [N; 3],
-}
+use crate::model::{Antialias, Light, ObjectDescription, Optimizations, Primitive, SceneDescription, Viewport, Window, MAX_LIGHTS};
+use crate::model::{Palette, Rgb4};
+use crate::shading::ShadingConstants;
 
 /// Where a prepared scene's objects live: anything that reads as a slice of them. The host's
 /// scene owns them (`heapless::Vec`, the default, prepared from a description); the firmware's

@@ -13,8 +13,8 @@
 use crate::geometry::Matrix4;
 use crate::number::Number;
 use crate::optimize::bounding_volume::VOLUMES;
-use crate::parser::{SceneError, SceneErrorKind};
-use crate::scene::{Light, ObjectDescription, Primitive, Projection, SceneDescription};
+use crate::model::{SceneError, SceneErrorKind};
+use crate::model::{Light, ObjectDescription, Primitive, Projection, SceneDescription};
 
 /// The axis-aligned box of every point a ray can start from: the eye or the window on the view
 /// plane for primary rays and, with shadows on, every object's bounding volume for shadow rays.

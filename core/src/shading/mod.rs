@@ -3,14 +3,12 @@
 
 mod dither;
 mod lighting;
-mod palette;
 mod pga;
 mod rgb;
 mod roughness;
 
 pub use dither::{dither_threshold, DITHER_4X4};
 pub use lighting::{lighting, Lighting};
-pub use palette::{Palette, Rgb4};
 pub use pga::{pga_index, ShadingConstants};
 pub use rgb::{rgb_intensity, rgb_pixel, rgb_quantized};
 pub use roughness::roughness_sample;

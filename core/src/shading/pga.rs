@@ -6,7 +6,7 @@
 use super::{dither_threshold, roughness_sample, Lighting};
 use crate::camera::PixelPosition;
 use crate::number::Number;
-use crate::scene::PreparedMaterial;
+use crate::model::PreparedMaterial;
 
 /// Constants the shading needs in the number type, converted once per scene.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -9,8 +9,8 @@
 use super::{Lighting, ShadingConstants};
 use crate::camera::PixelPosition;
 use crate::number::Number;
-use crate::pixel::Rgb888;
-use crate::scene::PreparedMaterial;
+use crate::model::Rgb888;
+use crate::model::PreparedMaterial;
 
 pub fn rgb_pixel<N: Number>(
     material: &PreparedMaterial<N>,

@@ -29,7 +29,7 @@ pub use bounds::{Interval, ScaledInterval};
 
 use crate::geometry::{Ray, Vector3};
 use crate::number::Number;
-use crate::scene::Primitive;
+use crate::model::Primitive;
 
 /// A hit in object space: the ray parameter and the outward normal there (not normalised).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -39,16 +39,6 @@ pub struct Hit<N> {
 }
 
 impl Primitive {
-    /// Whether this build contains the primitive's intersection code.
-    pub const fn is_compiled(self) -> bool {
-        match self {
-            Primitive::Cube => cfg!(feature = "cube"),
-            Primitive::Sphere => cfg!(feature = "sphere"),
-            Primitive::Cylinder => cfg!(feature = "cylinder"),
-            Primitive::Cone => cfg!(feature = "cone"),
-        }
-    }
-
     /// The nearest hit with `t` inside `interval`, if any.
     pub fn intersect<N: Number>(self, ray: &Ray<N>, interval: Interval<N>) -> Option<Hit<N>> {
         let (scaled, interval) = scaled_to_unit(ray, interval);

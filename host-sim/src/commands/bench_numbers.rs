@@ -11,7 +11,7 @@ use std::path::{Path, PathBuf};
 use std::time::Duration;
 
 use anyhow::Context;
-use microtrace::parser::{SceneError, SceneErrorKind};
+use microtrace::model::{SceneError, SceneErrorKind};
 
 use crate::files;
 use crate::image_difference::{percent, ImageDifference};

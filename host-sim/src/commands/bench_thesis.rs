@@ -16,7 +16,8 @@ use anyhow::Context;
 use microtrace::optimize::{Acceleration, Tuning};
 use microtrace::pixel::FrameBuffer;
 use microtrace::render::{render_pga, Statistics};
-use microtrace::scene::{Optimizations, Scene};
+use microtrace::model::Optimizations;
+use microtrace::scene::Scene;
 
 use crate::files;
 use crate::scene_file::{self, HostScene, HOST_MAX_OBJECTS};

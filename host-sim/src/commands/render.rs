@@ -5,7 +5,7 @@ use std::num::NonZeroUsize;
 use std::path::PathBuf;
 
 use anyhow::{bail, Context};
-use microtrace::scene::Optimizations;
+use microtrace::model::Optimizations;
 
 use crate::files;
 use crate::number_type::NumberType;
@@ -97,7 +97,7 @@ pub fn run(args: RenderArgs) -> anyhow::Result<()> {
         render_scene_on_threads(&scene, args.number, args.mode, Some(&label), threads)
     };
     let rendered = rendered
-        .map_err(|error| match error.downcast::<microtrace::parser::SceneError>() {
+        .map_err(|error| match error.downcast::<microtrace::model::SceneError>() {
             Ok(error) => scene_file::SceneFileError { path: args.scene.clone(), error }.into(),
             Err(other) => other.context(format!("cannot render {}", args.scene.display())),
         })?;

@@ -24,7 +24,8 @@ use embedded_graphics_simulator::sdl2::Keycode;
 use embedded_graphics_simulator::{OutputSettings, OutputSettingsBuilder, SimulatorDisplay, SimulatorEvent};
 use microtrace::pixel::FrameBuffer;
 use microtrace::render::{render_pga, render_pga_progressive, render_rgb, render_rgb_progressive, PassStatistics, Statistics};
-use microtrace::scene::{Antialias, Optimizations, Scene};
+use microtrace::model::{Antialias, Optimizations};
+use microtrace::scene::Scene;
 
 use crate::commands::render::statistics_table;
 use crate::files;

@@ -13,7 +13,8 @@ use embedded_graphics::text::{Baseline, Text};
 use embedded_graphics_simulator::SimulatorDisplay;
 use microtrace::number::Number;
 use microtrace::optimize::bounding_volume::ObjectGeometry;
-use microtrace::optimize::projection::{Polygon, View};
+use microtrace::optimize::bounding_volume::View;
+use microtrace::optimize::projection::Polygon;
 use microtrace::optimize::{sortlist, window_corners};
 use microtrace::scene::Scene;
 

@@ -2,7 +2,7 @@
 //! antialiasing (`A`), and how the panel states them with the rays they cost.
 
 use microtrace::render::Statistics;
-use microtrace::scene::{Antialias, MAX_DEPTH};
+use microtrace::model::{Antialias, MAX_DEPTH};
 
 /// The antialiasing threshold `A` uses when the scene has no `antialias` statement.
 pub const DEFAULT_THRESHOLD: f64 = 0.1;

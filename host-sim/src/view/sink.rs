@@ -8,8 +8,9 @@ use std::time::{Duration, Instant};
 use embedded_graphics::pixelcolor::Rgb888 as EgRgb888;
 use embedded_graphics::prelude::*;
 use embedded_graphics_simulator::{SimulatorDisplay, SimulatorEvent};
-use microtrace::pixel::{DrawTargetSink, FrameBuffer, PixelSink, PixelSource, Rgb888};
-use microtrace::shading::Palette;
+use microtrace::model::Rgb888;
+use microtrace::pixel::{DrawTargetSink, FrameBuffer, PixelSink, PixelSource};
+use microtrace::model::Palette;
 
 use super::window::View;
 

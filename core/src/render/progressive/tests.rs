@@ -3,7 +3,7 @@
 use super::*;
 use crate::pixel::MockSink;
 use crate::render::render_pga;
-use crate::scene::{Light, Material, ObjectDescription, Optimizations, Primitive, Projection, SceneDescription, Viewport, Window};
+use crate::model::{Light, Material, ObjectDescription, Optimizations, Primitive, Projection, SceneDescription, Viewport, Window};
 
 const W: usize = 21;
 const H: usize = 13;

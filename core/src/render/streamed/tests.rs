@@ -13,7 +13,7 @@ use super::*;
 use crate::number::{Fixed, Fixed16, SoftFloat};
 use crate::pixel::FrameBuffer;
 use crate::render::{render_pga, render_pga_sized, render_rgb};
-use crate::scene::{Optimizations, SceneDescription};
+use crate::model::{Optimizations, SceneDescription};
 
 const WIDTH: u16 = 128;
 const HEIGHT: u16 = 64;

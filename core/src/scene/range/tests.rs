@@ -4,7 +4,8 @@
 extern crate std;
 
 use crate::number::{Fixed, Fixed16, Number};
-use crate::parser::{parse, SceneError, SceneErrorKind};
+use crate::model::{SceneError, SceneErrorKind};
+use crate::parser::parse;
 use crate::scene::Scene;
 
 const CAPACITY: usize = 4;

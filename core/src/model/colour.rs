@@ -1,5 +1,8 @@
-//! The PGA look-up table: 256 entries of 4-bit red, green and blue, organised as 16 colour
+//! Colours: an RGB-mode pixel, and the PGA look-up table: 256 entries of 4-bit red, green and blue, organised as 16 colour
 //! groups of 16 shades; index = 16·group + shade (§4.2.4, figs 4.4–4.5; PGADPEND.C).
+
+/// An RGB-mode pixel: 8 bits per channel.
+pub type Rgb888 = [u8; 3];
 
 /// One look-up-table entry: 4 bits per primary (0..=15).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]

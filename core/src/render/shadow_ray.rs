@@ -6,7 +6,7 @@
 //! starts a little off the surface ([`shadow_origin`], docs/hard-cases.md).
 //!
 //! Beyond the thesis (which tested every other object): an object is tested only when the
-//! shadow ray's segment passes through its bounding sphere (`optimize::shadow`), and the object
+//! shadow ray's segment passes through its bounding sphere (`optimize::shadow_culling`), and the object
 //! that blocked the previous shadow ray is tried first (a shadow cache). Both only skip tests
 //! whose answer is known or reorder tests of a yes/no question, so the image is unchanged.
 //! They are on with Extents (they are its three-dimensional counterpart) unless the
@@ -15,8 +15,9 @@
 use super::Statistics;
 use crate::geometry::{Ray, Vector3};
 use crate::number::Number;
-use crate::optimize::shadow::{BlockerSet, DirectionChord, QuantizedDirection};
-use crate::scene::{Objects, Scene, MAX_LIGHTS};
+use crate::optimize::shadow_culling::{BlockerSet, DirectionChord, QuantizedDirection};
+use crate::model::MAX_LIGHTS;
+use crate::scene::{Objects, Scene};
 #[cfg(test)]
 use crate::scene::PreparedLight;
 use crate::shapes::Interval;

@@ -1,0 +1,30 @@
+//! The model: what a scene is made of, before any number type does work on it. The bottom
+//! layer of the crate above `number` and `geometry`: every other module may import it, and it
+//! imports none of them (docs/architecture.md; `tests/layers.rs` checks).
+//!
+//! - [`Primitive`]: the closed set of primitives (§4.2.5);
+//! - [`Viewport`], [`Window`], [`Projection`]: the camera as written (§4.3);
+//! - [`Material`] and [`PreparedMaterial`]: surface constants (table 4.1);
+//! - [`Light`], [`LightSource`]: the lights as written;
+//! - [`Rgb4`], [`Palette`], [`Rgb888`]: the PGA's look-up table and the RGB pixel;
+//! - [`Optimizations`]: which of §4.7's optimizations are on;
+//! - [`SceneDescription`]: a whole scene as written, which the parser produces;
+//! - [`SceneError`]: what is wrong with a scene, from the parser or from preparation.
+
+mod colour;
+mod description;
+mod error;
+mod light;
+mod material;
+mod optimizations;
+mod primitive;
+mod view;
+
+pub use colour::{Palette, Rgb4, Rgb888};
+pub use description::{Antialias, ObjectDescription, SceneDescription, SettingLines, DEFAULT_DEPTH, MAX_DEPTH};
+pub use error::{SceneError, SceneErrorKind, Token, TOKEN_EXCERPT_BYTES};
+pub use light::{Light, LightSource, MAX_LIGHTS};
+pub use material::{Material, PreparedMaterial};
+pub use optimizations::Optimizations;
+pub use primitive::Primitive;
+pub use view::{Projection, Viewport, Window};

@@ -1,0 +1,407 @@
+//! What the optimizations derive from the objects' bounding volumes at preparation (§4.7,
+//! `preprocess`): the screen map, the extents, the grid, the Sortlist order and the shadow
+//! bounds, rebuilt when the view changes.
+
+use crate::camera::{Camera, PixelPosition};
+use crate::geometry::{AffineTransform, Vector3};
+use crate::number::Number;
+use crate::model::{ObjectDescription, Optimizations, Primitive};
+
+use super::bounding_volume::ObjectGeometry;
+use super::capsule::{Capsule, ScreenMap};
+use super::extents::Extent;
+use super::grid::Grid;
+use super::projection::Screen;
+use super::build_options::SILHOUETTES;
+use super::shadow_culling::ShadowBound;
+use super::{capsule, grid, projection, shadow_culling, sortlist};
+
+/// Choices beyond the thesis; [`Tuning::IMPROVED`] is the default, [`Tuning::THESIS`] is the
+/// thesis's own algorithms (the 8-vertex volumes, the extent grid, shadow rays unculled).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Tuning {
+    /// Silhouettes from 16-gons circumscribed about rims and caps, not the 8-vertex volumes.
+    pub tight_silhouettes: bool,
+    /// Grid membership by silhouette, with the silhouette's rectangle within each cell.
+    pub cell_rectangles: bool,
+    /// Shadow rays skip objects whose bounding sphere they miss, and try the last blocker
+    /// first (with Extents on).
+    pub shadow_culling: bool,
+    /// Each primary ray first tests the object the previous ray hit (when the pixel is in its
+    /// extent), so Sortlist's exit comes at once where the surface continues.
+    pub hit_cache: bool,
+}
+
+impl Tuning {
+    pub const IMPROVED: Self = Self { tight_silhouettes: true, cell_rectangles: true, shadow_culling: true, hit_cache: true };
+    pub const THESIS: Self = Self { tight_silhouettes: false, cell_rectangles: false, shadow_culling: false, hit_cache: false };
+}
+
+/// What the optimizations derive per object from the bounding volumes at preprocess time.
+/// Per object: its place in the test order (`u16`), its extent (4 `u16`), a depth bound (`N`)
+/// and a shadow bounding capsule (8 `N`); per scene: the grid.
+#[derive(Debug, Clone)]
+pub struct Acceleration<N, const MAX_OBJECTS: usize> {
+    count: usize,
+    optimizations: Optimizations,
+    tuning: Tuning,
+    screen: Screen,
+    /// Test order: sorted by depth bound with Sortlist, object order otherwise.
+    order: [u16; MAX_OBJECTS],
+    extents: [Extent; MAX_OBJECTS],
+    /// Lower bound of the `t` of any hit on each object (`−N::MAX`: none known).
+    near: [N; MAX_OBJECTS],
+    /// Each object's silhouette as a stadium (our tuning), for the grid and the fill.
+    stadiums: [Option<capsule::Stadium>; MAX_OBJECTS],
+    #[cfg(feature = "acceleration-tables")]
+    shadow: [ShadowBound<N>; MAX_OBJECTS],
+    grid: Grid<N, MAX_OBJECTS>,
+}
+
+impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
+    /// The thesis's `preprocess` for the optimizations (digest §8.2).
+    pub fn build(camera: &Camera<N>, optimizations: Optimizations, objects: &[ObjectDescription]) -> Self {
+        Self::build_with(camera, optimizations, objects, Tuning::IMPROVED)
+    }
+
+    pub fn build_with(camera: &Camera<N>, optimizations: Optimizations, objects: &[ObjectDescription], tuning: Tuning) -> Self {
+        let mut acceleration = Self::UNSET;
+        acceleration.rebuild(camera, optimizations, objects, tuning);
+        acceleration
+    }
+
+    /// Every byte zero, nothing built: the value before [`Acceleration::rebuild`] (a `static`
+    /// holding it costs zero-initialised RAM and no flash).
+    pub const UNSET: Self = Self {
+        count: 0,
+        optimizations: Optimizations::NONE,
+        tuning: Tuning::THESIS,
+        screen: Screen::UNSET,
+        order: [0; MAX_OBJECTS],
+        extents: [Extent { first_column: 0, last_column: 0, first_row: 0, last_row: 0, diagonal: [0; 4] }; MAX_OBJECTS],
+        near: [N::ZEROED; MAX_OBJECTS],
+        stadiums: [None; MAX_OBJECTS],
+        #[cfg(feature = "acceleration-tables")]
+        shadow: [ShadowBound::UNSET; MAX_OBJECTS],
+        grid: Grid::UNSET,
+    };
+
+    /// [`Acceleration::build_with`] in place, so that the structures in a `static` (the
+    /// firmware's scene) are never copied through the stack.
+    pub fn rebuild(&mut self, camera: &Camera<N>, optimizations: Optimizations, objects: &[ObjectDescription], tuning: Tuning) {
+        let count = objects.len().min(MAX_OBJECTS).min(usize::from(u16::MAX));
+        // The geometry as the tracer will see it: the inverse rounded to N, inverted back.
+        let of = |index: usize| {
+            let geometry = objects.get(index).and_then(rendered_geometry::<N>)?;
+            Some((ObjectBounds::of_geometry(&geometry), Some(geometry)))
+        };
+        self.rebuild_with(camera, optimizations, tuning, count, of);
+    }
+
+    /// [`Acceleration::rebuild`] from each object's bounds prepared ahead in the number type
+    /// (the firmware's, made at build time): no `f64` at all. The same structures as
+    /// `rebuild` for the same bounds, but that objects reaching the eye plane cover the whole
+    /// screen (the eye-plane clip needs the `f64` silhouettes).
+    pub fn rebuild_from_bounds(&mut self, camera: &Camera<N>, optimizations: Optimizations, bounds: &[ObjectBounds<N>]) {
+        let count = bounds.len().min(MAX_OBJECTS).min(usize::from(u16::MAX));
+        self.rebuild_with(camera, optimizations, Tuning::IMPROVED, count, |index| bounds.get(index).map(|b| (*b, None)));
+    }
+
+    /// The common part: `of(index)` gives an object's bounds and, on the host, its f64
+    /// geometry (for the thesis's tuning and the eye-plane clip); `None`: nothing is known (a
+    /// singular transform), the object covers the screen.
+    fn rebuild_with(
+        &mut self,
+        camera: &Camera<N>,
+        optimizations: Optimizations,
+        tuning: Tuning,
+        count: usize,
+        of: impl Fn(usize) -> Option<(ObjectBounds<N>, Option<ObjectGeometry>)>,
+    ) {
+        let screen = if SILHOUETTES { Screen::new(camera) } else { Screen::sized(camera.width(), camera.height()) };
+        self.count = count;
+        self.optimizations = optimizations;
+        self.tuning = tuning;
+        self.screen = screen;
+        for (index, place) in self.order.iter_mut().enumerate() {
+            *place = index as u16;
+        }
+        self.extents.fill(Extent::whole(&screen));
+        self.near.fill(-N::MAX);
+        self.stadiums.fill(None);
+        #[cfg(feature = "acceleration-tables")]
+        self.shadow.fill(ShadowBound::always());
+        let corners = if SILHOUETTES { window_corners(&screen, camera) } else { [[0.0; 3]; 4] };
+        let map = ScreenMap::new(camera);
+        // Our tuning: capsules seen from the eye, in the number type (`capsule`); the thesis's:
+        // its volumes projected in f64.
+        // Without the `f64-silhouettes` feature (the firmware) there are only the capsules.
+        let capsules = tuning.tight_silhouettes || !SILHOUETTES;
+        // And each object's capsule for the grid's per-entry depth bounds (28 bytes in f32).
+        let mut stored = [Capsule::UNSET; MAX_OBJECTS];
+        let mut shapes = [Primitive::Sphere; MAX_OBJECTS];
+        for index in 0..count {
+            let Some((bounds, geometry)) = of(index) else { continue };
+            if let Some(shape) = shapes.get_mut(index) {
+                *shape = bounds.primitive;
+            }
+            let capsule = if capsules { bounds.capsule } else { Capsule::UNSET };
+            if let Some(slot) = stored.get_mut(index) {
+                *slot = capsule;
+            }
+            // A capsule that reaches the eye plane covers the whole screen; its object's f64
+            // silhouette clipped at the eye plane (`projection`, B16) does better. Only such
+            // objects take that path (the thesis scenes have none).
+            let reaches_eye = SILHOUETTES && capsules && map.cover(&capsule) == capsule::Covered::Whole && capsule.radius != N::MAX;
+            // The f64 paths need the geometry: without it (bounds prepared ahead), the whole
+            // screen and no depth bound.
+            let silhouette = |tight: bool| match &geometry {
+                Some(geometry) if SILHOUETTES => Extent::of(&screen, &screen.project_object(geometry, tight)),
+                _ => Extent::whole(&screen),
+            };
+            // Pixelbuffer fills the extents' octagons (`render::fill_volumes`).
+            if optimizations.extents || optimizations.grid || (optimizations.pixelbuffer && capsules) {
+                self.extents[index] = if reaches_eye {
+                    silhouette(true)
+                } else if capsules {
+                    let (covered, stadium) = map.cover_and_stadium(&capsule);
+                    if let Some(slot) = self.stadiums.get_mut(index) {
+                        *slot = stadium;
+                    }
+                    Extent::of_cover(&map, &covered)
+                } else {
+                    silhouette(false)
+                };
+            }
+            if optimizations.sortlist {
+                if capsules && !reaches_eye {
+                    if let Some(bound) = map.depth_bound(&capsule) {
+                        self.near[index] = bound;
+                    }
+                } else if let Some(bound) = geometry.as_ref().filter(|_| SILHOUETTES).and_then(|geometry| sortlist::depth_bound(&screen, &corners, geometry)) {
+                    self.near[index] = N::from_f64(bound);
+                }
+            }
+            #[cfg(feature = "acceleration-tables")]
+            if tuning.shadow_culling && optimizations.extents {
+                self.shadow[index] = bounds.shadow;
+            }
+        }
+        if optimizations.sortlist {
+            let near = &self.near;
+            if let Some(order) = self.order.get_mut(..count) {
+                sortlist::sort_by_bound(order, |i| near.get(i).copied().unwrap_or(-N::MAX));
+            }
+        }
+        if !optimizations.grid {
+            self.grid.clear();
+            return;
+        }
+        let capsules_of = |index: usize| stored.get(index).copied();
+        let polygon = |index: usize| match of(index).and_then(|(_, geometry)| geometry) {
+            Some(geometry) if SILHOUETTES => screen.project_object(&geometry, tuning.tight_silhouettes),
+            _ => projection::Projected::Whole,
+        };
+        let near = &self.near;
+        let block_capsule = |object: u16, columns: (u16, u16), rows: (u16, u16)| -> N {
+            let index = usize::from(object);
+            let global = near.get(index).copied().unwrap_or(-N::MAX);
+            // Only cylinders and cones gain: a sphere's or cube's capsule is a ball.
+            let shaped = shapes.get(index).is_some_and(|p| matches!(p, Primitive::Cylinder | Primitive::Cone));
+            let block = if shaped { capsules_of(index).and_then(|capsule| map.block_depth_bound(&capsule, columns, rows)) } else { None };
+            match block {
+                Some(bound) if bound > global => bound,
+                _ => global,
+            }
+        };
+        let block_depth = |object: u16, columns: (u16, u16), rows: (u16, u16)| -> N {
+            let index = usize::from(object);
+            let global = near.get(index).copied().unwrap_or(-N::MAX);
+            let block = of(index)
+                .and_then(|(_, geometry)| geometry)
+                .filter(|_| SILHOUETTES)
+                .and_then(|geometry| sortlist::block_depth_bound(&screen, &geometry, columns, rows));
+            match block {
+                Some(bound) if N::from_f64(bound) > global => N::from_f64(bound),
+                _ => global,
+            }
+        };
+        let depth: Option<&grid::BlockDepth<'_, N>> = match (optimizations.sortlist && tuning.cell_rectangles, capsules || !SILHOUETTES) {
+            (false, _) => None,
+            (true, false) => Some(&block_depth),
+            (true, true) => Some(&block_capsule),
+        };
+        let cells = match (tuning.cell_rectangles, capsules || !SILHOUETTES) {
+            (false, _) => grid::CellShape::Rectangles,
+            (true, false) => grid::CellShape::Polygons,
+            (true, true) => grid::CellShape::Octagons,
+        };
+        let (Some(order), Some(extents)) = (self.order.get(..count), self.extents.get(..count)) else { return };
+        let stadiums = &self.stadiums;
+        let stadium = |index: usize| stadiums.get(index).copied().flatten();
+        self.grid.rebuild(&screen, order, extents, polygon, stadium, cells, depth);
+    }
+
+    /// Grid: the entries of the pixel's cell and the pixel's offsets in it; `None` without a grid.
+    #[inline]
+    pub fn grid_cell(&self, pixel: PixelPosition) -> Option<(&[grid::Entry], &[N], u16, u16)> {
+        self.grid.cell(pixel.column, pixel.row)
+    }
+
+    /// Every object, in test order (sorted by depth bound with Sortlist).
+    #[inline]
+    pub fn order(&self) -> &[u16] {
+        self.order.get(..self.count).unwrap_or(&[])
+    }
+
+    pub fn tuning(&self) -> Tuning {
+        self.tuning
+    }
+
+    /// Whether the object `object` may be seen at `pixel` by its extent (true when extents
+    /// are not computed).
+    #[inline]
+    pub fn in_extent(&self, object: usize, pixel: PixelPosition) -> bool {
+        self.extents.get(object).is_some_and(|extent| {
+            extent.contains(pixel.column, pixel.row)
+                && (!self.tuning.tight_silhouettes || extent.diagonals_contain(pixel.column, pixel.row, self.screen.height))
+        })
+    }
+
+    /// Sortlist is on (for the grid's per-entry bounds).
+    #[inline]
+    pub fn sorts(&self) -> bool {
+        self.optimizations.sortlist && N::DEPTH_BOUNDS_HOLD
+    }
+
+    /// Whether primary rays try the previous hit object first.
+    #[inline]
+    pub fn uses_hit_cache(&self) -> bool {
+        self.tuning.hit_cache && (self.optimizations.sortlist || self.optimizations.extents || self.optimizations.grid)
+    }
+
+    /// Whether shadow rays are culled (shadow culling tuned on, with Extents).
+    #[inline]
+    pub fn culls_shadows(&self) -> bool {
+        cfg!(feature = "acceleration-tables") && self.tuning.shadow_culling && self.optimizations.extents && N::SHADOW_CULLING_HOLDS
+    }
+
+    /// Extents: whether the pixel lies outside the object's rectangle (skip it untested).
+    #[inline]
+    pub fn outside_extent(&self, object: usize, pixel: PixelPosition) -> bool {
+        let Some(extent) = self.extents.get(object) else { return false };
+        (self.optimizations.extents && !extent.contains(pixel.column, pixel.row))
+            || (self.tuning.tight_silhouettes
+                && (self.optimizations.extents || self.optimizations.grid)
+                && (!extent.diagonals_contain(pixel.column, pixel.row, self.screen.height)
+                    || self.stadiums.get(object).copied().flatten().is_some_and(|stadium| !stadium.contains(pixel.column, pixel.row))))
+    }
+
+    /// Sortlist: whether every hit on `object` (and so on every later candidate) lies beyond
+    /// the nearest hit so far, `t`. Strict, so an equal `t` is still tested.
+    #[inline]
+    pub fn beyond(&self, object: usize, t: N) -> bool {
+        self.sorts() && self.near.get(object).is_some_and(|near| *near > t)
+    }
+
+    /// The object's view from the light for the per-render shadow table (always meeting
+    /// every shadow ray without the `acceleration-tables` feature).
+    pub fn light_footprint(&self, object: usize, light: shadow_culling::LightPosition<N>) -> shadow_culling::LightFootprint<N> {
+        #[cfg(feature = "acceleration-tables")]
+        if let Some(bound) = self.shadow.get(object) {
+            return bound.footprint(light);
+        }
+        let _ = (object, light);
+        shadow_culling::LightFootprint::always()
+    }
+
+    #[inline]
+    pub fn may_shadow(&self, object: usize, point: Vector3<N>, direction: Vector3<N>, length: N) -> bool {
+        #[cfg(feature = "acceleration-tables")]
+        if let Some(bound) = self.shadow.get(object) {
+            return bound.may_block(point, direction, length);
+        }
+        let _ = (object, point, direction, length);
+        true
+    }
+
+    pub fn screen(&self) -> &Screen {
+        &self.screen
+    }
+
+    pub fn optimizations(&self) -> Optimizations {
+        self.optimizations
+    }
+
+    /// Whether the grid is in use (on, and its pool did not overflow).
+    pub fn grid_active(&self) -> bool {
+        self.grid.is_active()
+    }
+
+    /// Entries over all grid cells.
+    pub fn grid_entries(&self) -> usize {
+        self.grid.entries()
+    }
+
+    /// The entries the grid's pool holds ([`grid::POOL_PER_OBJECT`] per object).
+    pub const fn grid_capacity() -> usize {
+        grid::POOL_PER_OBJECT * MAX_OBJECTS
+    }
+
+    /// Sortlist's lower bound of `t` for the object, as the render uses it (`None`: none known,
+    /// or Sortlist off).
+    pub fn near_bound(&self, object: usize) -> Option<N> {
+        self.near.get(object).copied().filter(|near| *near != -N::MAX)
+    }
+
+    /// The object's silhouette as a stadium, when it has one (our tuning).
+    pub fn stadium(&self, object: usize) -> Option<capsule::Stadium> {
+        self.stadiums.get(object).copied().flatten()
+    }
+
+    pub fn extent(&self, object: usize) -> Option<Extent> {
+        self.extents.get(object).copied()
+    }
+}
+
+/// What the optimizations need of an object that depends on it alone: its primitive, its
+/// bounding capsule for the screen and its shadow capsule, in the number type. Prepared at
+/// preparation on the host, at build time for the firmware (`write_literal`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ObjectBounds<N> {
+    pub primitive: Primitive,
+    pub capsule: Capsule<N>,
+    pub shadow: ShadowBound<N>,
+}
+
+impl<N: Number> ObjectBounds<N> {
+    /// From the geometry the tracer renders (f64).
+    pub fn of_geometry(geometry: &ObjectGeometry) -> Self {
+        let (start, end, radius) = geometry.bounding_capsule();
+        Self { primitive: geometry.primitive, capsule: Capsule::new(start, end, radius), shadow: ShadowBound::new(start, end, radius) }
+    }
+
+    /// For each object of the descriptions (`None` for a singular transform).
+    pub fn of(description: &ObjectDescription) -> Option<Self> {
+        rendered_geometry::<N>(description).map(|geometry| Self::of_geometry(&geometry))
+    }
+
+    /// [`ObjectBounds::of`], or no bounds at all (the object tested everywhere) for a singular
+    /// transform: what the firmware's build prepares ahead.
+    pub fn ahead(description: &ObjectDescription) -> Self {
+        Self::of(description).unwrap_or(Self { primitive: description.primitive, capsule: Capsule::UNSET, shadow: ShadowBound::always() })
+    }
+}
+
+/// The object's geometry as the tracer will see it: the inverse rounded to `N`, inverted back.
+fn rendered_geometry<N: Number>(description: &ObjectDescription) -> Option<ObjectGeometry> {
+    let inverse = description.world_from_object.affine_inverse()?;
+    ObjectGeometry::new(description.primitive, &AffineTransform::<N>::from_matrix(&inverse))
+}
+
+/// The view-plane window's corners in world space (the parallel rays' extreme origins), as
+/// Sortlist's [`sortlist::depth_bound`] takes them.
+pub fn window_corners<N: Number>(screen: &Screen, camera: &Camera<N>) -> [[f64; 3]; 4] {
+    let (w, h) = (screen.width - 1, screen.height - 1);
+    [(0, 0), (w, 0), (0, h), (w, h)].map(|(c, r)| camera.view_plane_point(camera.pixel(c, r)).to_f64())
+}

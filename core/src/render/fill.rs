@@ -1,0 +1,183 @@
+//! Pixelbuffer's fill (§4.7.2, `initpga` and `rendervolume`): the marks that tell the image
+//! loop which pixels no object can cover.
+
+use core::ops::Range;
+
+use crate::number::Number;
+use crate::optimize::bounding_volume::ObjectGeometry;
+use crate::optimize::extents::Extent;
+use crate::optimize::pixelbuffer::hull_span;
+use crate::optimize::projection::Projected;
+use crate::pixel::PixelSink;
+use crate::scene::{Objects, Scene};
+
+/// Pixelbuffer's fill colour in PGA mode (the thesis's default `fillcolor`); the flood is its
+/// complement, so the two always differ.
+pub const PGA_FILL: u8 = 112;
+/// Pixelbuffer's fill colour in RGB mode; the flood is its complement.
+pub const RGB_FILL: [u8; 3] = [112, 0, 255];
+
+/// Pixelbuffer's preprocess (`initpga` and `rendervolume`): flood the viewport, then fill
+/// every object's extent octagon (its silhouette's rectangle cut by the two diagonal ranges,
+/// computed when the scene was prepared), row span by row span, in integer arithmetic. With
+/// the thesis's tuning, the thesis's fill: each 8-vertex volume projected and scan-converted. Public so a viewer can
+/// record which pixels the fill marks (into a sink of its own, with its own two values).
+pub fn fill_volumes<N, P, S, const MAX_OBJECTS: usize, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, fill: P, flood: P)
+where
+    N: Number,
+    P: Copy,
+    S: PixelSink<P>,
+{
+    fill_volumes_rows(scene, sink, fill, flood, 0..scene.acceleration.screen().height)
+}
+
+/// [`fill_volumes`] within the image rows `rows` only.
+pub fn fill_volumes_rows<N, P, S, const MAX_OBJECTS: usize, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, fill: P, flood: P, rows: Range<u16>)
+where
+    N: Number,
+    P: Copy,
+    S: PixelSink<P>,
+{
+    let screen = scene.acceleration.screen();
+    let width = screen.width;
+    let rows = rows.start..rows.end.min(screen.height);
+    if rows.is_empty() {
+        return;
+    }
+    for row in rows.clone() {
+        sink.mark_row(0, row, width, flood);
+    }
+    let acceleration = &scene.acceleration;
+    if acceleration.tuning().tight_silhouettes || !crate::optimize::SILHOUETTES {
+        // Each object's extent octagon, prepared with the other optimizations: integer spans,
+        // no projection per frame.
+        for index in 0..scene.objects.len() {
+            let Some(extent) = acceleration.extent(index) else { continue };
+            // Rows outside the extent first: the streamed render fills one row at a time, and
+            // most objects miss it.
+            if extent.last_row < rows.start || extent.first_row >= rows.end {
+                continue;
+            }
+            let stadium = acceleration.stadium(index);
+            for row in rows.clone() {
+                let Some(span) = extent.row_span(row, screen.height) else { continue };
+                // Narrowed by the silhouette's stadium: a thin oblique rod fills a band along it.
+                let span = match stadium {
+                    Some(stadium) => match stadium.block(span, (row, row)) {
+                        Some((columns, _)) => columns,
+                        None => continue,
+                    },
+                    None => span,
+                };
+                sink.mark_row(span.0, row, span.1 - span.0 + 1, fill);
+            }
+        }
+        return;
+    }
+    // The thesis's fill: each object's 8-vertex volume projected and scan-converted.
+    for object in scene.objects.iter() {
+        let projected = match ObjectGeometry::new(object.primitive, &object.object_from_world) {
+            Some(geometry) => screen.project_object(&geometry, false),
+            None => Projected::Whole,
+        };
+        let points = match projected {
+            Projected::Points(points) => points,
+            Projected::Invisible => continue,
+            Projected::Whole => {
+                // No projection (the eye in or at the volume, or rays along the view plane): all.
+                for row in rows.clone() {
+                    sink.mark_row(0, row, width, fill);
+                }
+                continue;
+            }
+        };
+        let extent = Extent::of(screen, &projected);
+        if extent.is_empty() {
+            continue;
+        }
+        for row in extent.first_row.max(rows.start)..=extent.last_row.min(rows.end - 1) {
+            if let Some((first, last)) = hull_span(&points, row, width) {
+                sink.mark_row(first, row, last - first + 1, fill);
+            }
+        }
+    }
+}
+
+/// The Pixelbuffer's fill of one row, as spans: which of its pixels the normal render with
+/// Pixelbuffer traces (the rest hold the flood colour and become the background). Each object
+/// marks at most one span a row; should more come, the whole row counts as covered (a traced
+/// pixel outside the fill is the background anyway).
+pub(crate) struct RowCoverage<const MAX_OBJECTS: usize> {
+    spans: [(u16, u16); MAX_OBJECTS],
+    count: usize,
+    overflowed: bool,
+}
+
+impl<const MAX_OBJECTS: usize> RowCoverage<MAX_OBJECTS> {
+    /// No span yet: covers nothing.
+    pub(crate) const fn empty() -> Self {
+        Self { spans: [(0, 0); MAX_OBJECTS], count: 0, overflowed: false }
+    }
+
+    pub(crate) fn of<N: Number, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, row: u16) -> Self {
+        let mut coverage = Self::empty();
+        fill_volumes_rows(scene, &mut coverage, true, false, row..row.saturating_add(1));
+        coverage
+    }
+
+    pub(crate) fn covers(&self, column: u16) -> bool {
+        self.overflowed || self.spans.iter().take(self.count).any(|&(first, width)| column >= first && column - first < width)
+    }
+
+    /// The spans sorted by their first column (an insertion sort: a row has a few), or `None`
+    /// when there were more than the coverage holds and the whole row counts as covered. For the
+    /// streamed render (`super::streamed`), which walks them once a row instead of testing each
+    /// pixel against every span.
+    pub(crate) fn sorted_spans(&mut self) -> Option<&[(u16, u16)]> {
+        if self.overflowed {
+            return None;
+        }
+        let spans = self.spans.get_mut(..self.count)?;
+        for next in 1..spans.len() {
+            let Some(&moving) = spans.get(next) else { break };
+            let mut slot = next;
+            while let Some(&before) = slot.checked_sub(1).and_then(|previous| spans.get(previous)) {
+                if before.0 <= moving.0 {
+                    break;
+                }
+                if let Some(place) = spans.get_mut(slot) {
+                    *place = before;
+                }
+                slot -= 1;
+            }
+            if let Some(place) = spans.get_mut(slot) {
+                *place = moving;
+            }
+        }
+        Some(spans)
+    }
+}
+
+impl<const MAX_OBJECTS: usize> PixelSink<bool> for RowCoverage<MAX_OBJECTS> {
+    fn set_pixel(&mut self, x: u16, y: u16, filled: bool) {
+        self.mark_row(x, y, 1, filled);
+    }
+
+    fn fill_row(&mut self, x: u16, y: u16, width: u16, filled: bool) {
+        self.mark_row(x, y, width, filled);
+    }
+
+    /// The flood (`false`) comes first and covers nothing; each fill (`true`) is a span.
+    fn mark_row(&mut self, x: u16, _y: u16, width: u16, filled: bool) {
+        if !filled || width == 0 {
+            return;
+        }
+        match self.spans.get_mut(self.count) {
+            Some(span) => {
+                *span = (x, width);
+                self.count += 1;
+            }
+            None => self.overflowed = true,
+        }
+    }
+}

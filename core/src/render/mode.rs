@@ -1,0 +1,78 @@
+//! The two pixel modes (§4.2.4): PGA palette indices and 8-bit RGB, each a surface's own shade
+//! and the ray tree's node colours.
+
+use super::surface::NodeColours;
+use crate::camera::PixelPosition;
+use crate::model::{PreparedMaterial, Rgb888};
+use crate::number::Number;
+use crate::scene::{Objects, Scene};
+use crate::shading::{pga_index, rgb_intensity, rgb_pixel, rgb_quantized, Lighting};
+
+/// A mode's pixels: a surface's own (the thesis's shading) and the ray tree's node colours.
+pub(crate) trait Mode<N>: NodeColours<N> {
+    fn surface(&self, material: &PreparedMaterial<N>, lighting: Lighting<N>, pixel: PixelPosition) -> Self::Pixel;
+    /// The pixel of an antialiased mean (8-bit RGB).
+    fn averaged(&self, colour: [u8; 3]) -> Self::Pixel;
+}
+
+/// PGA mode: a surface's palette index; a tree's node is its index's LUT colour, and a mixed
+/// pixel the LUT entry nearest the mix (scene format, chapter 5).
+pub(crate) struct PgaNodes<'a, N, const MAX_OBJECTS: usize, O> {
+    pub scene: &'a Scene<N, MAX_OBJECTS, O>,
+}
+
+impl<N: Number, const MAX_OBJECTS: usize, O: Objects<N>> NodeColours<N> for PgaNodes<'_, N, MAX_OBJECTS, O> {
+    type Pixel = u8;
+    fn finish(&self, colour: [N; 3], _pixel: PixelPosition) -> u8 {
+        let half = self.scene.constants.half;
+        self.scene.palette.nearest(colour.map(|c| (c + half).floor_to_i32().clamp(0, 255) as u8))
+    }
+    fn local(&self, material: &PreparedMaterial<N>, lighting: Lighting<N>, pixel: PixelPosition) -> [N; 3] {
+        lut_colour(self.scene, self.surface(material, lighting, pixel))
+    }
+    fn background(&self) -> [N; 3] {
+        lut_colour(self.scene, self.scene.background)
+    }
+}
+
+#[cfg_attr(not(feature = "ray-tree"), allow(dead_code))]
+fn lut_colour<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, index: u8) -> [N; 3] {
+    scene.palette.entry(index).to_rgb888().map(|c| N::from_i32(i32::from(c)))
+}
+
+impl<N: Number, const MAX_OBJECTS: usize, O: Objects<N>> Mode<N> for PgaNodes<'_, N, MAX_OBJECTS, O> {
+    fn surface(&self, material: &PreparedMaterial<N>, lighting: Lighting<N>, pixel: PixelPosition) -> u8 {
+        pga_index(material, lighting, &self.scene.constants, self.scene.dither, pixel)
+    }
+    fn averaged(&self, colour: [u8; 3]) -> u8 {
+        self.scene.palette.nearest(colour)
+    }
+}
+
+/// RGB mode: the channels' intensities, clamped and rounded (or dithered) once at the end.
+pub(crate) struct RgbNodes<'a, N, const MAX_OBJECTS: usize, O> {
+    pub scene: &'a Scene<N, MAX_OBJECTS, O>,
+}
+
+impl<N: Number, const MAX_OBJECTS: usize, O: Objects<N>> NodeColours<N> for RgbNodes<'_, N, MAX_OBJECTS, O> {
+    type Pixel = Rgb888;
+    fn finish(&self, colour: [N; 3], pixel: PixelPosition) -> Rgb888 {
+        rgb_quantized(colour, &self.scene.constants, self.scene.dither, pixel)
+    }
+    fn local(&self, material: &PreparedMaterial<N>, lighting: Lighting<N>, _pixel: PixelPosition) -> [N; 3] {
+        rgb_intensity(material, lighting, &self.scene.constants)
+    }
+    fn background(&self) -> [N; 3] {
+        self.scene.background_rgb().map(|c| N::from_i32(i32::from(c)))
+    }
+}
+
+impl<N: Number, const MAX_OBJECTS: usize, O: Objects<N>> Mode<N> for RgbNodes<'_, N, MAX_OBJECTS, O> {
+    fn surface(&self, material: &PreparedMaterial<N>, lighting: Lighting<N>, pixel: PixelPosition) -> Rgb888 {
+        rgb_pixel(material, lighting, &self.scene.constants, self.scene.dither, pixel)
+    }
+    fn averaged(&self, colour: [u8; 3]) -> Rgb888 {
+        colour
+    }
+}
+
