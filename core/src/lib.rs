@@ -6,6 +6,7 @@
 //! - [`geometry`]: vectors, rays and the row-vector affine transforms of §1.5.1.
 //! - [`model`]: what a scene is made of: primitives, view, materials, lights, colours, the
 //!   scene as written, and the error type. Imports nothing above `geometry`.
+//! - [`light`]: the lights in the number type and their shading terms (§4.2.4, digest §6.2).
 //! - [`shapes`]: the four unit primitives of §4.2.5 with `intersect` and `occluded` (§4.5–4.6).
 //! - [`camera`]: window/viewport mapping and primary rays (§4.3).
 //! - [`shading`]: the PGA and RGB shading models, look-up table, dither, roughness (§4.2.4).
@@ -24,6 +25,7 @@
 pub mod camera;
 pub mod formats;
 pub mod geometry;
+pub mod light;
 pub mod model;
 pub mod number;
 pub mod optimize;

@@ -25,7 +25,8 @@ use microtrace::model::{SceneError, SceneErrorKind};
 use microtrace::pixel::FrameBuffer;
 use microtrace::render::{in_shadow, nearest_hit, render_pga, shade_pixel, shadow_origin, ShadedPixel, Statistics};
 use microtrace::model::SceneDescription;
-use microtrace::scene::{PreparedLight, Scene};
+use microtrace::light::PreparedLight;
+use microtrace::scene::Scene;
 use microtrace::shapes::Interval;
 
 const CAPACITY: usize = 16;

@@ -2,9 +2,9 @@
 //! statistics of Table 4.2.
 
 mod antialias;
+mod direct_lighting;
 mod fill;
 mod image;
-mod lights;
 mod mode;
 mod pixel_value;
 mod primary;

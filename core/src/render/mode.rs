@@ -6,7 +6,8 @@ use crate::camera::PixelPosition;
 use crate::model::{PreparedMaterial, Rgb888};
 use crate::number::Number;
 use crate::scene::{Objects, Scene};
-use crate::shading::{pga_index, rgb_intensity, rgb_pixel, rgb_quantized, Lighting};
+use crate::light::Lighting;
+use crate::shading::{pga_index, rgb_intensity, rgb_pixel, rgb_quantized};
 
 /// A mode's pixels: a surface's own (the thesis's shading) and the ray tree's node colours.
 pub(crate) trait Mode<N>: NodeColours<N> {

@@ -1,7 +1,7 @@
 //! One pixel (RTRACE.C `raycast`): the primary ray's nearest hit, its local lighting with a
 //! shadow ray per light, and, when the ray tree spawns rays from it, the tree's mix.
 
-use super::lights::direct_lighting;
+use super::direct_lighting::direct_lighting;
 use super::mode::Mode;
 use super::primary::nearest_hit_cached;
 #[cfg(feature = "ray-tree")]
@@ -13,7 +13,7 @@ use crate::camera::PixelPosition;
 use crate::model::PreparedMaterial;
 use crate::number::Number;
 use crate::scene::{Objects, Scene};
-use crate::shading::Lighting;
+use crate::light::Lighting;
 
 /// What a traced pixel saw: nothing, or an object's material lit by `lighting`.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -14,7 +14,7 @@
 
 use heapless::Vec;
 
-use super::lights::direct_lighting;
+use super::direct_lighting::direct_lighting;
 use super::secondary::nearest_secondary_hit;
 use super::shadow_ray::{shadow_origin, ShadowCache, ShadowCulling};
 use super::Statistics;

@@ -19,7 +19,7 @@ use crate::optimize::shadow_culling::{BlockerSet, DirectionChord, QuantizedDirec
 use crate::model::MAX_LIGHTS;
 use crate::scene::{Objects, Scene};
 #[cfg(test)]
-use crate::scene::PreparedLight;
+use crate::light::PreparedLight;
 use crate::shapes::Interval;
 
 /// How far off the surface a shadow ray starts, as a power of two of the hit point's largest

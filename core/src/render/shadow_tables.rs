@@ -8,7 +8,7 @@ use crate::number::Number;
 #[cfg(feature = "acceleration-tables")]
 use crate::optimize::shadow_culling::{blocker_table, BlockerSet, DirectionChord, LightPosition, LightReach};
 #[cfg(feature = "acceleration-tables")]
-use crate::scene::PreparedLight;
+use crate::light::PreparedLight;
 use crate::scene::{Objects, Scene};
 
 /// Runs `body` with the per-render shadow tables, one per light: for a point light each

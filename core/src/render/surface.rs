@@ -5,7 +5,7 @@ use crate::camera::PixelPosition;
 use crate::geometry::{Ray, Vector3};
 use crate::number::Number;
 use crate::model::PreparedMaterial;
-use crate::shading::Lighting;
+use crate::light::Lighting;
 
 /// How a node's colour is made in the render's mode: RGB channels on a 0..255 scale.
 // Without the `ray-tree` feature only the primary rays' parts are used.

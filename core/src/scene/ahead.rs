@@ -14,7 +14,8 @@ use crate::optimize::bounding_sphere::BoundingSphere;
 use crate::optimize::ObjectBounds;
 use crate::model::{SceneError, SceneErrorKind};
 use crate::model::{Optimizations, MAX_LIGHTS};
-use crate::scene::{Objects, Optics, PreparedAntialias, PreparedLight, PreparedLightSource, Scene};
+use crate::light::{PreparedLight, PreparedLightSource};
+use crate::scene::{Objects, Optics, PreparedAntialias, Scene};
 use crate::model::Palette;
 use crate::shading::ShadingConstants;
 
@@ -159,7 +160,7 @@ pub fn write_prepared_ahead<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
         None => write!(out, ", None, ")?,
     }
     vector(out, camera.parallel_direction().unwrap_or(Vector3::zero()))?;
-    write!(out, "),\n    light: microtrace::scene::PreparedLight::")?;
+    write!(out, "),\n    light: microtrace::light::PreparedLight::")?;
     let (kind, position) = match scene.light {
         PreparedLight::Point(position) => ("Point", position),
         PreparedLight::Direction(direction) => ("Direction", direction),
@@ -205,13 +206,13 @@ pub fn write_prepared_ahead<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
 
 /// `MORE_LIGHTS_AHEAD`, and `OPTICS_AHEAD` and `SPHERES_AHEAD` (the ray tree's, empty without it).
 fn write_tree_ahead<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, out: &mut dyn Write) -> fmt::Result {
-    writeln!(out, "pub static MORE_LIGHTS_AHEAD: [microtrace::scene::PreparedLightSource<Number>; {}] = [", scene.more_lights.len())?;
+    writeln!(out, "pub static MORE_LIGHTS_AHEAD: [microtrace::light::PreparedLightSource<Number>; {}] = [", scene.more_lights.len())?;
     for source in &scene.more_lights {
         let (kind, position) = match source.light {
             PreparedLight::Point(position) => ("Point", position),
             PreparedLight::Direction(direction) => ("Direction", direction),
         };
-        write!(out, "    microtrace::scene::PreparedLightSource {{ light: microtrace::scene::PreparedLight::{kind}(")?;
+        write!(out, "    microtrace::light::PreparedLightSource {{ light: microtrace::light::PreparedLight::{kind}(")?;
         vector(out, position)?;
         write!(out, "), intensity: ")?;
         source.intensity.write_literal(out)?;

@@ -12,6 +12,7 @@ use heapless::Vec;
 
 use crate::camera::Camera;
 use crate::geometry::{AffineTransform, Vector3};
+use crate::light::{PreparedLight, PreparedLightSource};
 use crate::number::Number;
 #[cfg(feature = "ray-tree")]
 use crate::optimize::bounding_sphere::BoundingSphere;
@@ -20,7 +21,7 @@ use crate::optimize::space_grid::SpaceGrid;
 use crate::optimize::{Acceleration, Tuning};
 use crate::model::{SceneError, SceneErrorKind};
 use crate::scene::range::{self, RayOrigins};
-use crate::model::{Antialias, Light, ObjectDescription, Optimizations, Primitive, SceneDescription, Viewport, Window, MAX_LIGHTS};
+use crate::model::{Antialias, ObjectDescription, Optimizations, Primitive, SceneDescription, Viewport, Window, MAX_LIGHTS};
 use crate::model::{Palette, Rgb4};
 use crate::shading::ShadingConstants;
 
@@ -40,20 +41,6 @@ pub struct Object<N> {
     pub primitive: Primitive,
     pub object_from_world: AffineTransform<N>,
     pub material: PreparedMaterial<N>,
-}
-
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum PreparedLight<N> {
-    Point(Vector3<N>),
-    /// Unit vector toward the light.
-    Direction(Vector3<N>),
-}
-
-/// A light beyond the first, with its intensity.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct PreparedLightSource<N> {
-    pub light: PreparedLight<N>,
-    pub intensity: N,
 }
 
 /// Adaptive antialiasing as the render needs it (thesis fig 2.9): the image's viewport, the
@@ -222,7 +209,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
         self.light_intensity = N::from_f64(description.light_intensity);
         self.more_lights.clear();
         for source in &description.more_lights {
-            let light = Self::prepared_light(source.light, source.line)?;
+            let light = PreparedLight::new(source.light, source.line)?;
             // Capacities are equal, so every light fits.
             let _ = self.more_lights.push(PreparedLightSource { light, intensity: N::from_f64(source.intensity) });
         }
@@ -257,21 +244,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
         };
         let camera = Camera::new(viewport, window, description.view_plane, description.projection)
             .ok_or(SceneError { line: description.lines.projection, kind: SceneErrorKind::ZeroDirection })?;
-        Ok((camera, Self::prepared_light(description.light, description.lines.light)?))
-    }
-
-    /// A light in the number type; a direction is normalised (`line`: where it was written).
-    fn prepared_light(light: Light, line: u32) -> Result<PreparedLight<N>, SceneError> {
-        Ok(match light {
-            Light::Point(position) => PreparedLight::Point(Vector3::from_f64(position)),
-            Light::Direction(direction) => {
-                let length = libm::sqrt(direction.iter().map(|c| c * c).sum::<f64>());
-                if length == 0.0 || !length.is_finite() {
-                    return Err(SceneError { line, kind: SceneErrorKind::ZeroDirection });
-                }
-                PreparedLight::Direction(Vector3::from_f64(direction.map(|c| c / length)))
-            }
-        })
+        Ok((camera, PreparedLight::new(description.light, description.lines.light)?))
     }
 
     /// Prepares the objects into `self.objects` and builds the acceleration structures, in place.

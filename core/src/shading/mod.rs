@@ -2,13 +2,11 @@
 //! model, the 4x4 dither and the roughness noise.
 
 mod dither;
-mod lighting;
 mod pga;
 mod rgb;
 mod roughness;
 
 pub use dither::{dither_threshold, DITHER_4X4};
-pub use lighting::{lighting, Lighting};
 pub use pga::{pga_index, ShadingConstants};
 pub use rgb::{rgb_intensity, rgb_pixel, rgb_quantized};
 pub use roughness::roughness_sample;

@@ -3,7 +3,8 @@
 //! `intensity = 15·(ks·spec + kd·diff + ka·Ia) + rnd·noise`, clamped to [0, 14.9], then either
 //! rounded or dithered; index = 16·group + shade.
 
-use super::{dither_threshold, roughness_sample, Lighting};
+use super::{dither_threshold, roughness_sample};
+use crate::light::Lighting;
 use crate::camera::PixelPosition;
 use crate::number::Number;
 use crate::model::PreparedMaterial;

@@ -6,7 +6,8 @@
 //! `channel = 255·(ka·Ia·ρ + kd·diff·ρ + ks·spec)`, clamped to [0, 254.9], rounded or dithered
 //! like the PGA shade.
 
-use super::{Lighting, ShadingConstants};
+use super::ShadingConstants;
+use crate::light::Lighting;
 use crate::camera::PixelPosition;
 use crate::number::Number;
 use crate::model::Rgb888;

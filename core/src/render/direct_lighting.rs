@@ -9,8 +9,9 @@ use super::shadow_ray::{light_share, ShadowCache, ShadowCulling};
 use super::Statistics;
 use crate::geometry::Vector3;
 use crate::number::Number;
-use crate::scene::{Objects, PreparedLight, Scene};
-use crate::shading::{lighting, Lighting};
+use crate::light::PreparedLight;
+use crate::scene::{Objects, Scene};
+use crate::light::{lighting, Lighting};
 
 /// The lighting at `point` on object `object` with the unit `normal` facing the incoming ray
 /// `view`; `start` is where shadow rays leave (the point moved off the surface).
