@@ -30,6 +30,7 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 use microtrace::model::{Optimizations, Primitive, SceneDescription};
+use microtrace::number::NumberKind;
 
 /// Objects a scene file may hold at build time; the firmware itself is sized by the scene.
 const PARSE_CAPACITY: usize = 512;
@@ -89,15 +90,10 @@ fn main() {
     writeln!(source, "pub const STACK_RESERVE_BYTES: Option<usize> = {reserve};").unwrap();
     // The scene prepared ahead in the number type: what the chip starts from (no f64 there).
     let vsqrt = number.contains("VsqrtF32");
-    let written = match number_name.as_str() {
-        "f64" => ahead::<f64>(&description, &mut source),
-        "f32" if vsqrt => ahead::<microtrace::number::F32With<HostSqrt>>(&description, &mut source),
-        "f32" => ahead::<f32>(&description, &mut source),
-        "fixed" => ahead::<microtrace::number::Fixed>(&description, &mut source),
-        "fixed16" => ahead::<microtrace::number::Fixed16>(&description, &mut source),
-        "f32-micromath" => ahead::<microtrace::number::F32Micro>(&description, &mut source),
-        "soft32" => ahead::<microtrace::number::SoftFloat>(&description, &mut source),
-        other => fail(&format!("MICROTRACE_NUMBER={other}: no preparation ahead for it")),
+    let written = match NumberKind::from_name(&number_name) {
+        Some(NumberKind::F32) if vsqrt => ahead::<microtrace::number::F32With<HostSqrt>>(&description, &mut source),
+        Some(kind) => microtrace::with_number_kind!(kind, N => ahead::<N>(&description, &mut source)),
+        None => fail(&format!("MICROTRACE_NUMBER={number_name}: no preparation ahead for it")),
     };
     if let Err(error) = written {
         fail(&match error {
@@ -222,33 +218,29 @@ fn memory_region(text: &str, name: &str) -> Option<(u64, u64)> {
     })
 }
 
-/// The Rust type the tracer computes in, and the firmware feature it needs (a new number type
-/// goes here, in Cargo.toml's features and in xtask's `number_feature`).
+/// The Rust type the tracer computes in (the core's `NumberKind`), checking that the firmware
+/// feature it needs is on.
 fn number_type(name: &str, board: Board) -> &'static str {
     // The Cortex-M4F's FPU has `vsqrt.f32`, which the core cannot emit (libm's `sqrtf` is
     // integer code there); it is correctly rounded, so the image is plain f32's. Only with the
     // hard-float ABI (an FPU); the lm3s6965evb has none. `cfg(vsqrt_f32)` compiles the module.
     println!("cargo:rustc-check-cfg=cfg(vsqrt_f32)");
     let hard_float = env("CARGO_CFG_TARGET_ABI").as_deref() == Some("eabihf");
-    let (type_name, feature) = match name {
-        "f64" => ("f64", None),
-        "f32" if matches!(board, Board::Mps2An386) && hard_float => {
-            println!("cargo:rustc-cfg=vsqrt_f32");
-            ("microtrace::number::F32With<crate::board::VsqrtF32>", None)
-        }
-        "f32" => ("f32", None),
-        "fixed" => ("microtrace::number::Fixed", Some("fixed-point")),
-        "fixed16" => ("microtrace::number::Fixed16", Some("fixed-point")),
-        "f32-micromath" => ("microtrace::number::F32Micro", Some("micromath")),
-        "soft32" => ("microtrace::number::SoftFloat", Some("soft-float")),
-        other => fail(&format!("MICROTRACE_NUMBER={other}: expected f64, f32, fixed, fixed16, f32-micromath or soft32")),
+    let Some(kind) = NumberKind::from_name(name) else {
+        let names: Vec<&str> = NumberKind::ALL.iter().map(|kind| kind.name()).collect();
+        let (last, rest) = names.split_last().unwrap_or((&"", &[]));
+        fail(&format!("MICROTRACE_NUMBER={name}: expected {} or {last}", rest.join(", ")))
     };
-    if let Some(feature) = feature {
+    if kind == NumberKind::F32 && matches!(board, Board::Mps2An386) && hard_float {
+        println!("cargo:rustc-cfg=vsqrt_f32");
+        return "microtrace::number::F32With<crate::board::VsqrtF32>";
+    }
+    if let Some(feature) = kind.feature() {
         if env(&format!("CARGO_FEATURE_{}", feature.to_uppercase().replace('-', "_"))).is_none() {
             fail(&format!("MICROTRACE_NUMBER={name} needs the firmware feature `{feature}`"));
         }
     }
-    type_name
+    kind.type_path()
 }
 
 /// The host's stand-in for the M4F's `vsqrt.f32`: std's `f32::sqrt`, correctly rounded as

@@ -15,11 +15,11 @@ use microtrace::model::Viewport;
 use microtrace::scene::Scene;
 use microtrace::model::Palette;
 
-use crate::number_type::NumberType;
+use microtrace::number::NumberKind;
 use crate::parallel::render_in_bands;
 use crate::progress::{Progress, ProgressReport};
 use crate::scene_file::{HostScene, HOST_MAX_OBJECTS};
-use crate::with_number_type;
+use microtrace::with_number_kind;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum Mode {
@@ -77,7 +77,7 @@ pub fn prepare_boxed<N: Number>(scene: &HostScene) -> Result<Box<Scene<N, HOST_M
 
 /// Prepares and renders `scene` on this thread alone. With `progress` set, shows progress on a
 /// terminal.
-pub fn render_scene(scene: &HostScene, number: NumberType, mode: Mode, progress: Option<&str>) -> anyhow::Result<Rendered> {
+pub fn render_scene(scene: &HostScene, number: NumberKind, mode: Mode, progress: Option<&str>) -> anyhow::Result<Rendered> {
     render_scene_on_threads(scene, number, mode, progress, NonZeroUsize::MIN)
 }
 
@@ -86,7 +86,7 @@ pub fn render_scene(scene: &HostScene, number: NumberType, mode: Mode, progress:
 /// sum over bands.
 pub fn render_scene_on_threads(
     scene: &HostScene,
-    number: NumberType,
+    number: NumberKind,
     mode: Mode,
     progress: Option<&str>,
     threads: NonZeroUsize,
@@ -99,7 +99,7 @@ pub fn render_scene_on_threads(
     }
     let single_threaded = threads.get() == 1;
     // The scene error stays typed (not just its text) so callers can tell "out of range" apart.
-    with_number_type!(number, N => {
+    with_number_kind!(number, N => {
         let started = Instant::now();
         let prepared = prepare_boxed::<N>(scene).map_err(anyhow::Error::new)?;
         let preprocess = started.elapsed();
@@ -141,14 +141,14 @@ pub fn render_scene_on_threads(
 /// Prepares and renders `scene` progressively on this thread (`microtrace::render`'s
 /// `render_pga_progressive`): coarse to fine in four passes, the same image as [`render_scene`],
 /// with each pass's statistics. Progress counts each row once per pass.
-pub fn render_scene_progressive(scene: &HostScene, number: NumberType, mode: Mode, progress: Option<&str>) -> anyhow::Result<Rendered> {
+pub fn render_scene_progressive(scene: &HostScene, number: NumberKind, mode: Mode, progress: Option<&str>) -> anyhow::Result<Rendered> {
     let viewport = scene.viewport;
     let (width, height) = (viewport.width(), viewport.height());
     let pixel_count = usize::from(width) * usize::from(height);
     if pixel_count > 64 << 20 {
         bail!("the viewport is {width}x{height}: too large to render in memory");
     }
-    with_number_type!(number, N => {
+    with_number_kind!(number, N => {
         let started = Instant::now();
         let prepared = prepare_boxed::<N>(scene).map_err(anyhow::Error::new)?;
         let preprocess = started.elapsed();

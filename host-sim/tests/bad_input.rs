@@ -6,16 +6,15 @@ use std::collections::BTreeSet;
 use std::path::Path;
 use std::process::Command;
 
-use clap::ValueEnum;
 use microtrace::formats;
 use microtrace::model::{SceneError, SceneErrorKind};
 use microtrace::parser::parse;
 use microtrace::pixel::FrameBuffer;
 use microtrace::model::Primitive;
 use microtrace::scene::Scene;
-use microtrace_sim::number_type::NumberType;
+use microtrace::number::NumberKind;
 use microtrace_sim::scene_file::{in_file, SceneFileError, HOST_MAX_OBJECTS};
-use microtrace_sim::with_number_type;
+use microtrace::with_number_kind;
 
 #[allow(dead_code)]
 mod common;
@@ -191,8 +190,8 @@ fn scene_library(row: &Row) -> (String, String) {
     }
     let description = Box::new(description.unwrap_or_else(|error| panic!("{row:?} does not parse: {error}")));
     let number = row.place.strip_prefix("prepare ").unwrap();
-    let number = NumberType::from_str(number, false).unwrap();
-    let prepared = with_number_type!(number, N => Scene::<N, HOST_MAX_OBJECTS>::prepare(&*description).map(|_| ()));
+    let number = NumberKind::from_name(number).unwrap();
+    let prepared = with_number_kind!(number, N => Scene::<N, HOST_MAX_OBJECTS>::prepare(&*description).map(|_| ()));
     let error = prepared.expect_err(&format!("{row:?} prepares"));
     let name = scene_variant(&error.kind).to_owned();
     let message = format!("{:#}", in_file(Path::new("scene.mts"), anyhow::Error::new(error)));

@@ -4,7 +4,7 @@
 use std::path::Path;
 
 use microtrace_sim::image_difference::ImageDifference;
-use microtrace_sim::number_type::NumberType;
+use microtrace::number::NumberKind;
 
 mod common;
 
@@ -31,7 +31,7 @@ fn every_number_type_renders_both_thesis_scenes_close_to_f64() {
         let reference = render_indices(&directory, scene, "f64");
         let distinct = |indices: &[u8]| indices.iter().collect::<std::collections::BTreeSet<_>>().len();
         assert!(distinct(&reference) > 10, "{scene}: the f64 image has only {} indices", distinct(&reference));
-        for number in NumberType::ALL.iter().map(|n| n.name()) {
+        for number in NumberKind::ALL.iter().map(|n| n.name()) {
             let image = render_indices(&directory, scene, number);
             let difference = ImageDifference::measure(&reference, &image, 128, 64, &palette).unwrap();
             let identical = difference.percent_identical();

@@ -9,6 +9,7 @@ use std::sync::Mutex;
 use std::time::Duration;
 
 use microtrace::model::{Primitive, SceneDescription};
+use microtrace::number::NumberKind;
 
 use crate::elf;
 use crate::oled;
@@ -176,7 +177,15 @@ pub const FIRMWARE_SCENE_CAPACITY: usize = 512;
 pub const FIRMWARE_SIZE: (u16, u16) = (128, 64);
 
 /// The number types firmware/build.rs knows.
-pub const NUMBERS: [&str; 6] = ["f64", "f32", "fixed", "fixed16", "f32-micromath", "soft32"];
+pub const NUMBERS: [&str; NumberKind::ALL.len()] = {
+    let mut names = [""; NumberKind::ALL.len()];
+    let mut index = 0;
+    while index < names.len() {
+        names[index] = NumberKind::ALL[index].name();
+        index += 1;
+    }
+    names
+};
 
 pub fn run(options: &FirmwareOptions) -> Result<FirmwareRun, String> {
     check_options(options)?;
@@ -324,15 +333,6 @@ fn parse_scene(scene: &Path) -> Result<Box<SceneDescription<FIRMWARE_SCENE_CAPAC
     Ok(Box::new(description))
 }
 
-/// The firmware feature a number type needs (see `number_type` in firmware/build.rs).
-fn number_feature(number: &str) -> Option<&'static str> {
-    match number {
-        "fixed" | "fixed16" => Some("fixed-point"),
-        "f32-micromath" => Some("micromath"),
-        "soft32" => Some("soft-float"),
-        _ => None,
-    }
-}
 
 /// Builds the firmware with the given primitive features instead of the scene's own (for
 /// checking that a mismatch fails the build); returns the ELF path or the build's errors.
@@ -350,7 +350,7 @@ fn build(options: &FirmwareOptions, scene: &Path, primitive_features: &[&str]) -
     let target_dir = firmware.join("target");
     let mut features = vec![options.board.name()];
     features.extend_from_slice(primitive_features);
-    features.extend(number_feature(&options.number));
+    features.extend(NumberKind::from_name(&options.number).and_then(NumberKind::feature));
     if options.progressive {
         features.push("progressive");
     }

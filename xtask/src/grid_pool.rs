@@ -3,7 +3,7 @@
 //! parts made ahead at the firmware's size and in its number type, and the entries its grid
 //! holds become the build's `MICROTRACE_GRID_ENTRIES_PER_OBJECT` (core/src/optimize/grid.rs).
 
-use microtrace::number::{F32Micro, Fixed, Fixed16, Number, SoftFloat};
+use microtrace::number::{Number, NumberKind};
 use microtrace::optimize::ObjectBounds;
 use microtrace::model::{Optimizations, SceneDescription};
 use microtrace::scene::Scene;
@@ -28,15 +28,10 @@ pub fn entries_per_object(
     let entries = std::thread::scope(|scope| {
         std::thread::Builder::new()
             .stack_size(64 << 20)
-            .spawn_scoped(scope, || match number {
-                "f64" => entries::<f64>(&description),
+            .spawn_scoped(scope, || match NumberKind::from_name(number) {
                 // The Cortex-M4F's f32 with `vsqrt.f32` is f32 bit for bit (both correctly rounded).
-                "f32" => entries::<f32>(&description),
-                "fixed" => entries::<Fixed>(&description),
-                "fixed16" => entries::<Fixed16>(&description),
-                "f32-micromath" => entries::<F32Micro>(&description),
-                "soft32" => entries::<SoftFloat>(&description),
-                other => Err(format!("unknown number type `{other}`")),
+                Some(kind) => microtrace::with_number_kind!(kind, N => entries::<N>(&description)),
+                None => Err(format!("unknown number type `{number}`")),
             })
             .map_err(|error| format!("cannot start a thread: {error}"))?
             .join()

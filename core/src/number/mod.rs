@@ -16,6 +16,7 @@
 //! images stay `f32`'s, and its name is `f32`.
 
 mod f32_with;
+mod kind;
 #[cfg(feature = "fixed-point")]
 mod fixed;
 mod float;
@@ -25,6 +26,7 @@ mod micromath;
 mod soft_float;
 
 pub use f32_with::{F32With, SquareRoot};
+pub use kind::NumberKind;
 #[cfg(feature = "fixed-point")]
 pub use fixed::{Fixed, Fixed16};
 #[cfg(feature = "micromath")]

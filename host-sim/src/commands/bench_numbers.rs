@@ -15,7 +15,7 @@ use microtrace::model::{SceneError, SceneErrorKind};
 
 use crate::files;
 use crate::image_difference::{percent, ImageDifference};
-use crate::number_type::NumberType;
+use microtrace::number::NumberKind;
 use crate::rendering::{render_scene, Mode, Pixels};
 use crate::scene_file::{self, HostScene};
 
@@ -81,7 +81,7 @@ enum Outcome {
 }
 
 struct Measured {
-    number: NumberType,
+    number: NumberKind,
     outcome: Outcome,
     difference: Option<ImageDifference>,
     median: Option<Duration>,
@@ -115,12 +115,12 @@ struct CaseResult {
 }
 
 impl CaseResult {
-    fn of(&self, number: NumberType) -> Option<&Measured> {
+    fn of(&self, number: NumberKind) -> Option<&Measured> {
         self.numbers.iter().find(|measured| measured.number == number)
     }
 
     fn f64_median(&self) -> Option<Duration> {
-        self.of(NumberType::F64).and_then(|measured| measured.median)
+        self.of(NumberKind::F64).and_then(|measured| measured.median)
     }
 }
 
@@ -211,9 +211,9 @@ fn stem_of(path: &Path) -> String {
 
 /// Renders `case` with every number type in interleaved rounds and compares with f64.
 fn measure(case: Case) -> anyhow::Result<CaseResult> {
-    let mut outcomes: Vec<(NumberType, Outcome)> = Vec::new();
+    let mut outcomes: Vec<(NumberKind, Outcome)> = Vec::new();
     let mut first_round = Duration::ZERO;
-    for &number in NumberType::ALL {
+    for number in NumberKind::ALL {
         let outcome = match timed_render(&case.scene, number) {
             Ok((rendered, time)) => {
                 first_round += time;
@@ -244,7 +244,7 @@ fn measure(case: Case) -> anyhow::Result<CaseResult> {
         }
     }
     let reference = match &outcomes[0] {
-        (NumberType::F64, Outcome::Rendered { indices, .. }) => Some(indices.clone()),
+        (NumberKind::F64, Outcome::Rendered { indices, .. }) => Some(indices.clone()),
         _ => None,
     };
     let (width, height) = (usize::from(case.scene.viewport.width()), usize::from(case.scene.viewport.height()));
@@ -274,7 +274,7 @@ fn measure(case: Case) -> anyhow::Result<CaseResult> {
 
 /// Renders in PGA mode and times preparation plus tracing in the thread's CPU time (wall-clock
 /// time where there is no thread clock).
-fn timed_render(scene: &HostScene, number: NumberType) -> anyhow::Result<(crate::rendering::Rendered, Duration)> {
+fn timed_render(scene: &HostScene, number: NumberKind) -> anyhow::Result<(crate::rendering::Rendered, Duration)> {
     let started = clock::thread_cpu_time();
     // `render_scene` renders on this thread alone, so this thread's CPU time is the whole render's.
     let rendered = render_scene(scene, number, Mode::Pga, None)?;
@@ -300,7 +300,7 @@ fn median(times: &[Duration]) -> Duration {
 fn plot_points(results: &[CaseResult]) -> Vec<PlotPoint> {
     let mut points = Vec::new();
     for group in GROUPS {
-        for &number in NumberType::ALL {
+        for number in NumberKind::ALL {
             let (mut differing, mut pixels, mut time, mut f64_time) = (0, 0, 0.0, 0.0);
             for result in results.iter().filter(|result| result.case.group == group) {
                 let (Some(measured), Some(reference_time)) = (result.of(number), result.f64_median()) else { continue };
@@ -427,7 +427,7 @@ fn write_summary(report: &mut String, results: &[CaseResult], firmware: &Firmwar
     writeln!(report, "## Summary: the targets of issue 4\n")?;
     writeln!(report, "| target | measured | verdict |\n|---|---|---|")?;
     let thesis: Vec<&CaseResult> = results.iter().filter(|r| r.case.group != GROUP_HARD).collect();
-    let differences = |number: NumberType| -> Vec<(String, Option<ImageDifference>)> {
+    let differences = |number: NumberKind| -> Vec<(String, Option<ImageDifference>)> {
         thesis.iter().map(|r| (r.case.label(), r.of(number).and_then(|m| m.difference))).collect()
     };
     let all_met = |values: &[(String, Option<ImageDifference>)], test: &dyn Fn(&ImageDifference) -> bool| -> Option<bool> {
@@ -440,8 +440,8 @@ fn write_summary(report: &mut String, results: &[CaseResult], firmware: &Firmwar
             .collect::<Vec<_>>()
             .join("; ")
     };
-    let fixed = differences(NumberType::Fixed);
-    let f32 = differences(NumberType::F32);
+    let fixed = differences(NumberKind::Fixed);
+    let f32 = differences(NumberKind::F32);
     let identical = |d: &ImageDifference| identical_text(d);
     writeln!(
         report,
@@ -503,7 +503,7 @@ fn write_summary(report: &mut String, results: &[CaseResult], firmware: &Firmwar
     )?;
     // soft32, the software floating point, against f32's accuracy target and the same speed
     // target, with the scene's optimizations and with all of them off.
-    let soft = differences(NumberType::Soft32);
+    let soft = differences(NumberKind::Soft32);
     writeln!(
         report,
         "| soft32 (software floating point): f32's target, ≥ {F32_IDENTICAL_PERCENT} % identical to f64 on both thesis scenes, both sizes | {} | {} |",
@@ -520,7 +520,7 @@ fn write_summary(report: &mut String, results: &[CaseResult], firmware: &Firmwar
     writeln!(report)?;
     write_accuracy_overview(report, &thesis)?;
     // Plain words for what is not met.
-    let fixed16 = differences(NumberType::Fixed16);
+    let fixed16 = differences(NumberKind::Fixed16);
     let fixed16_speedups: Vec<String> = stems
         .iter()
         .filter_map(|stem| ratio(stem, "fixed16").map(|r| format!("{stem} {:.2}x", r.ratio)))
@@ -589,7 +589,7 @@ fn write_accuracy_overview(report: &mut String, thesis: &[&CaseResult]) -> anyho
         thesis.len()
     )?;
     writeln!(report, "| number | lowest identical | largest step | group changes | speckles | all four met |\n|---|---:|---:|---:|---:|---|")?;
-    for &number in &NumberType::ALL[1..] {
+    for &number in &NumberKind::ALL[1..] {
         let differences: Option<Vec<ImageDifference>> = thesis.iter().map(|r| r.of(number).and_then(|m| m.difference)).collect();
         let Some(differences) = differences.filter(|d| !d.is_empty()) else {
             writeln!(report, "| {} | not rendered on every thesis scene | | | | not measured |", number.name())?;
@@ -624,20 +624,20 @@ fn write_number_types(report: &mut String) -> anyhow::Result<()> {
          Scene set-up (matrix inversion, trigonometry) is always f64 and converted once.\n"
     )?;
     writeln!(report, "| `--number` | representation | range of scene values | notes |\n|---|---|---|---|")?;
-    for &number in NumberType::ALL {
+    for number in NumberKind::ALL {
         let (representation, notes) = match number {
-            NumberType::F64 => ("IEEE binary64", "the reference every other type is compared with"),
-            NumberType::F32 => ("IEEE binary32", "hardware on Cortex-M4F, software on Cortex-M3"),
-            NumberType::Fixed => (
+            NumberKind::F64 => ("IEEE binary64", "the reference every other type is compared with"),
+            NumberKind::F32 => ("IEEE binary32", "hardware on Cortex-M4F, software on Cortex-M3"),
+            NumberKind::Fixed => (
                 "Q32.32 in an i64 (fixed point)",
                 "exact 128-bit products rounded once; for FPU-less targets; saturates instead of overflowing",
             ),
-            NumberType::Fixed16 => (
+            NumberKind::Fixed16 => (
                 "Q16.16 in an i32 (fixed point)",
                 "64-bit intermediate products; cheapest on Cortex-M3, but unit directions keep only 16 fraction bits",
             ),
-            NumberType::F32Micromath => ("IEEE binary32", "micromath's approximate square root (up to 6 % error)"),
-            NumberType::Soft32 => (
+            NumberKind::F32Micromath => ("IEEE binary32", "micromath's approximate square root (up to 6 % error)"),
+            NumberKind::Soft32 => (
                 "28-bit mantissa and binary exponent in two i32 (software floating point)",
                 "for FPU-less targets: no NaN, infinity or denormals; saturates; products by one 32x32 multiply, sums and dot products in 32-bit registers",
             ),
@@ -649,9 +649,9 @@ fn write_number_types(report: &mut String) -> anyhow::Result<()> {
 }
 
 /// The largest scene value the type accepts (`Number::SCENE_LIMIT`).
-fn scene_limit(number: NumberType) -> String {
+fn scene_limit(number: NumberKind) -> String {
     use microtrace::number::Number;
-    let limit = crate::with_number_type!(number, N => <N as Number>::SCENE_LIMIT);
+    let limit = microtrace::with_number_kind!(number, N => <N as Number>::SCENE_LIMIT);
     if limit.is_infinite() { "any finite".into() } else { format!("±{limit}") }
 }
 

@@ -8,7 +8,7 @@ use anyhow::{bail, Context};
 use microtrace::model::Optimizations;
 
 use crate::files;
-use crate::number_type::NumberType;
+use microtrace::number::NumberKind;
 use crate::rendering::{render_scene_on_threads, render_scene_progressive, Mode, Pixels, Rendered};
 use microtrace::render::PASS_SIZES;
 use crate::scene_file::{self, parse_optimizations, parse_size, parse_switch};
@@ -21,8 +21,8 @@ pub struct RenderArgs {
     #[arg(long, value_name = "IMAGE.png")]
     pub out: Option<PathBuf>,
     /// The number type to trace in.
-    #[arg(long, value_enum, default_value = "f64")]
-    pub number: NumberType,
+    #[arg(long, value_parser = crate::number_type::number_kind_parser(), default_value = "f64")]
+    pub number: NumberKind,
     /// PGA palette mode or 24-bit RGB mode.
     #[arg(long, value_enum, default_value = "pga")]
     pub mode: Mode,

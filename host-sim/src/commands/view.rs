@@ -29,10 +29,10 @@ use microtrace::scene::Scene;
 
 use crate::commands::render::statistics_table;
 use crate::files;
-use crate::number_type::NumberType;
+use microtrace::number::NumberKind;
 use crate::rendering::{Mode, Pixels, Rendered};
 use crate::scene_file::{self, parse_optimizations, parse_size, parse_switch, HostScene, HOST_MAX_OBJECTS};
-use crate::with_number_type;
+use microtrace::with_number_kind;
 
 #[path = "../view/mod.rs"]
 pub mod ui;
@@ -50,8 +50,8 @@ pub struct ViewArgs {
     /// The scene to show (.mts).
     pub scene: PathBuf,
     /// The number type to trace in (N cycles it in the window).
-    #[arg(long, value_enum, default_value = "f64")]
-    pub number: NumberType,
+    #[arg(long, value_parser = crate::number_type::number_kind_parser(), default_value = "f64")]
+    pub number: NumberKind,
     /// PGA palette mode or 24-bit RGB mode (M switches).
     #[arg(long, value_enum, default_value = "pga")]
     pub mode: Mode,
@@ -97,7 +97,7 @@ pub struct ViewArgs {
 
 /// What the keys change.
 struct Settings {
-    number: NumberType,
+    number: NumberKind,
     mode: Mode,
     overlay: bool,
     fill: bool,
@@ -272,8 +272,8 @@ fn apply(action: Action, scene: &mut HostScene, settings: &mut Settings, path: &
 }
 
 /// Whether the scene prepares in `number`, with the preparation error naming the file if not.
-fn prepares(scene: &HostScene, number: NumberType, path: &Path) -> Result<(), scene_file::SceneFileError> {
-    let prepared = with_number_type!(number, N => Scene::<N, HOST_MAX_OBJECTS>::prepare(scene).map(|_| ()));
+fn prepares(scene: &HostScene, number: NumberKind, path: &Path) -> Result<(), scene_file::SceneFileError> {
+    let prepared = with_number_kind!(number, N => Scene::<N, HOST_MAX_OBJECTS>::prepare(scene).map(|_| ()));
     prepared.map_err(|error| scene_file::SceneFileError { path: path.to_owned(), error })
 }
 
@@ -301,8 +301,8 @@ fn ray_lines(scene: &HostScene, rendered: &Rendered) -> [String; rays::LINES] {
 /// The next number type after `current` that can represent the scene; the ones that cannot
 /// (beyond a fixed-point type's range) are skipped with their preparation error on stderr,
 /// rather than ending the window.
-fn next_number_type(scene: &HostScene, current: NumberType, path: &Path) -> Option<NumberType> {
-    let all = NumberType::ALL;
+fn next_number_type(scene: &HostScene, current: NumberKind, path: &Path) -> Option<NumberKind> {
+    let all = NumberKind::ALL;
     let at = all.iter().position(|n| *n == current).unwrap_or(0);
     (1..all.len()).map(|step| all[(at + step) % all.len()]).find(|&number| match prepares(scene, number, path) {
         Ok(()) => true,
@@ -346,7 +346,7 @@ fn render(scene: &HostScene, settings: &Settings, display: &mut SimulatorDisplay
     let (width, height) = (viewport.width(), viewport.height());
     let count = usize::from(width) * usize::from(height);
     let palette = scene.palette;
-    with_number_type!(settings.number, N => {
+    with_number_kind!(settings.number, N => {
         let started = Instant::now();
         let prepared = Box::new(Scene::<N, HOST_MAX_OBJECTS>::prepare(scene).map_err(|error| anyhow::anyhow!("{error}"))?);
         let preprocess = started.elapsed();
@@ -489,7 +489,7 @@ mod tests {
         // Beyond fixed16's ±16 384 (the window) but within fixed's ±26 000.
         let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes/hard/large_coordinates.mts");
         let scene = scene_file::load(&path).unwrap();
-        assert_eq!(next_number_type(&scene, NumberType::F32, &path), Some(NumberType::Fixed));
-        assert_eq!(next_number_type(&scene, NumberType::Fixed, &path), Some(NumberType::F32Micromath));
+        assert_eq!(next_number_type(&scene, NumberKind::F32, &path), Some(NumberKind::Fixed));
+        assert_eq!(next_number_type(&scene, NumberKind::Fixed, &path), Some(NumberKind::F32Micromath));
     }
 }

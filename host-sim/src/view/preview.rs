@@ -19,9 +19,9 @@ use microtrace::pixel::{ColourMap, FrameBuffer, LutColour, LutGrey, OrderedDithe
 use microtrace::render::{render_pga, Statistics};
 use microtrace::scene::Scene;
 
-use crate::number_type::NumberType;
+use microtrace::number::NumberKind;
 use crate::scene_file::{HostScene, HOST_MAX_OBJECTS};
-use crate::with_number_type;
+use microtrace::with_number_kind;
 
 use super::sink::Borrowed;
 
@@ -90,7 +90,7 @@ pub struct Preview {
 }
 
 /// Renders `scene` as a display of `kind` shows it.
-pub fn render(scene: &HostScene, number: NumberType, kind: DisplayKind) -> anyhow::Result<Preview> {
+pub fn render(scene: &HostScene, number: NumberKind, kind: DisplayKind) -> anyhow::Result<Preview> {
     let mut fitted = scene.clone();
     let (width, height) = kind.size();
     fitted.fit_to_size(width, height);
@@ -118,7 +118,7 @@ pub fn render(scene: &HostScene, number: NumberType, kind: DisplayKind) -> anyho
 
 /// The render of the fitted scene into `target` through `map`, a finished row at a time, as the
 /// firmware and the real-board examples send theirs.
-fn render_into<D, M>(fitted: &HostScene, number: NumberType, target: D, map: M) -> anyhow::Result<()>
+fn render_into<D, M>(fitted: &HostScene, number: NumberKind, target: D, map: M) -> anyhow::Result<()>
 where
     D: DrawTarget,
     M: ColourMap<Color = D::Color>,
@@ -127,7 +127,7 @@ where
     let mut buffer = vec![0u8; usize::from(width) * usize::from(height)];
     let frame = FrameBuffer::new(&mut buffer, width, height).expect("buffer sized to the viewport");
     let mut sink = RowDisplaySink::new(frame, target, map);
-    with_number_type!(number, N => {
+    with_number_kind!(number, N => {
         let prepared = Box::new(Scene::<N, HOST_MAX_OBJECTS>::prepare(fitted).map_err(anyhow::Error::new)?);
         render_pga(&*prepared, &mut sink, &mut Statistics::default());
     });
