@@ -88,167 +88,79 @@ fn finish_object<const MAX_OBJECTS: usize>(scene: &SceneDescription<MAX_OBJECTS>
     }
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Keyword {
-    Viewport,
-    Window,
-    Viewplane,
-    Perspective,
-    Parallel,
-    Light,
-    Ambient,
-    Background,
-    Shadows,
-    Dither,
-    Group,
-    Optimize,
-    Primitive(Primitive),
-    Scale,
-    Rotate,
-    Translate,
-    Colour,
-    Ka,
-    Kd,
-    Ks,
-    Pwr,
-    Rnd,
-    Cmy,
-    Reflect,
-    Transmit,
-    Ior,
-    Depth,
-    Antialias,
+/// The format's statements, each written once: its keyword, its arguments (fewest, most;
+/// `None`: no limit), its usage, and whether it changes the most recent object. The primitives'
+/// keywords come from [`Primitive`] (each takes no argument and starts an object).
+macro_rules! keywords {
+    ($($variant:ident $name:literal ($fewest:literal, $most:expr) $usage:literal $changes_object:literal;)*) => {
+        #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+        enum Keyword {
+            $($variant,)*
+            Primitive(Primitive),
+        }
+
+        impl Keyword {
+            fn from_token(token: &str) -> Option<Self> {
+                match token {
+                    $($name => Some(Keyword::$variant),)*
+                    _ => Primitive::ALL.into_iter().find(|primitive| primitive.name() == token).map(Keyword::Primitive),
+                }
+            }
+
+            fn name(self) -> &'static str {
+                match self {
+                    $(Keyword::$variant => $name,)*
+                    Keyword::Primitive(primitive) => primitive.name(),
+                }
+            }
+
+            /// (fewest arguments, most arguments (`None`: no limit), usage).
+            fn arity(self) -> (u8, Option<u8>, &'static str) {
+                match self {
+                    $(Keyword::$variant => ($fewest, $most, $usage),)*
+                    Keyword::Primitive(primitive) => (0, Some(0), primitive.name()),
+                }
+            }
+
+            /// Whether the statement changes the most recent object.
+            fn needs_object(self) -> bool {
+                match self {
+                    $(Keyword::$variant => $changes_object,)*
+                    Keyword::Primitive(_) => false,
+                }
+            }
+        }
+    };
 }
 
-impl Keyword {
-    const ALL: [Keyword; 31] = [
-        Keyword::Viewport,
-        Keyword::Window,
-        Keyword::Viewplane,
-        Keyword::Perspective,
-        Keyword::Parallel,
-        Keyword::Light,
-        Keyword::Ambient,
-        Keyword::Background,
-        Keyword::Shadows,
-        Keyword::Dither,
-        Keyword::Group,
-        Keyword::Optimize,
-        Keyword::Primitive(Primitive::Cube),
-        Keyword::Primitive(Primitive::Sphere),
-        Keyword::Primitive(Primitive::Cylinder),
-        Keyword::Primitive(Primitive::Cone),
-        Keyword::Scale,
-        Keyword::Rotate,
-        Keyword::Translate,
-        Keyword::Colour,
-        Keyword::Ka,
-        Keyword::Kd,
-        Keyword::Ks,
-        Keyword::Pwr,
-        Keyword::Rnd,
-        Keyword::Cmy,
-        Keyword::Reflect,
-        Keyword::Transmit,
-        Keyword::Ior,
-        Keyword::Depth,
-        Keyword::Antialias,
-    ];
-
-    fn from_token(token: &str) -> Option<Self> {
-        Self::ALL.into_iter().find(|keyword| keyword.name() == token)
-    }
-
-    fn name(self) -> &'static str {
-        match self {
-            Keyword::Viewport => "viewport",
-            Keyword::Window => "window",
-            Keyword::Viewplane => "viewplane",
-            Keyword::Perspective => "perspective",
-            Keyword::Parallel => "parallel",
-            Keyword::Light => "light",
-            Keyword::Ambient => "ambient",
-            Keyword::Background => "background",
-            Keyword::Shadows => "shadows",
-            Keyword::Dither => "dither",
-            Keyword::Group => "group",
-            Keyword::Optimize => "optimize",
-            Keyword::Primitive(primitive) => primitive.name(),
-            Keyword::Scale => "scale",
-            Keyword::Rotate => "rotate",
-            Keyword::Translate => "translate",
-            Keyword::Colour => "colour",
-            Keyword::Ka => "ka",
-            Keyword::Kd => "kd",
-            Keyword::Ks => "ks",
-            Keyword::Pwr => "pwr",
-            Keyword::Rnd => "rnd",
-            Keyword::Cmy => "cmy",
-            Keyword::Reflect => "reflect",
-            Keyword::Transmit => "transmit",
-            Keyword::Ior => "ior",
-            Keyword::Depth => "depth",
-            Keyword::Antialias => "antialias",
-        }
-    }
-
-    /// (fewest arguments, most arguments (`None`: no limit), usage).
-    fn arity(self) -> (u8, Option<u8>, &'static str) {
-        let exactly = |count: u8, usage| (count, Some(count), usage);
-        match self {
-            Keyword::Viewport => exactly(4, "viewport X1 X2 Y1 Y2"),
-            Keyword::Window => exactly(4, "window X1 X2 Y1 Y2"),
-            Keyword::Viewplane => exactly(1, "viewplane D"),
-            Keyword::Perspective => exactly(3, "perspective X Y Z"),
-            Keyword::Parallel => exactly(3, "parallel DX DY DZ"),
-            Keyword::Light => (4, Some(5), "light point X Y Z [I] | light direction DX DY DZ [I]"),
-            Keyword::Ambient => exactly(1, "ambient A"),
-            Keyword::Background => exactly(1, "background C"),
-            Keyword::Shadows => exactly(1, "shadows on|off"),
-            Keyword::Dither => exactly(1, "dither on|off"),
-            Keyword::Group => exactly(5, "group N R G B up|down"),
-            Keyword::Optimize => (1, None, "optimize all|none|pixelbuffer extents grid sortlist"),
-            Keyword::Primitive(Primitive::Cube) => exactly(0, "cube"),
-            Keyword::Primitive(Primitive::Sphere) => exactly(0, "sphere"),
-            Keyword::Primitive(Primitive::Cylinder) => exactly(0, "cylinder"),
-            Keyword::Primitive(Primitive::Cone) => exactly(0, "cone"),
-            Keyword::Scale => exactly(3, "scale SX SY SZ"),
-            Keyword::Rotate => exactly(2, "rotate x|y|z DEG"),
-            Keyword::Translate => exactly(3, "translate TX TY TZ"),
-            Keyword::Colour => exactly(1, "colour N"),
-            Keyword::Ka => exactly(1, "ka V"),
-            Keyword::Kd => exactly(1, "kd V"),
-            Keyword::Ks => exactly(1, "ks V"),
-            Keyword::Pwr => exactly(1, "pwr V"),
-            Keyword::Rnd => exactly(1, "rnd V"),
-            Keyword::Cmy => exactly(3, "cmy C M Y"),
-            Keyword::Reflect => exactly(1, "reflect R"),
-            Keyword::Transmit => exactly(1, "transmit T"),
-            Keyword::Ior => exactly(1, "ior N"),
-            Keyword::Depth => exactly(1, "depth N"),
-            Keyword::Antialias => (1, Some(2), "antialias off | antialias T [L]"),
-        }
-    }
-
-    /// Whether the statement changes the most recent object.
-    fn needs_object(self) -> bool {
-        matches!(
-            self,
-            Keyword::Scale
-                | Keyword::Rotate
-                | Keyword::Translate
-                | Keyword::Colour
-                | Keyword::Ka
-                | Keyword::Kd
-                | Keyword::Ks
-                | Keyword::Pwr
-                | Keyword::Rnd
-                | Keyword::Cmy
-                | Keyword::Reflect
-                | Keyword::Transmit
-                | Keyword::Ior
-        )
-    }
+keywords! {
+    Viewport "viewport" (4, Some(4)) "viewport X1 X2 Y1 Y2" false;
+    Window "window" (4, Some(4)) "window X1 X2 Y1 Y2" false;
+    Viewplane "viewplane" (1, Some(1)) "viewplane D" false;
+    Perspective "perspective" (3, Some(3)) "perspective X Y Z" false;
+    Parallel "parallel" (3, Some(3)) "parallel DX DY DZ" false;
+    Light "light" (4, Some(5)) "light point X Y Z [I] | light direction DX DY DZ [I]" false;
+    Ambient "ambient" (1, Some(1)) "ambient A" false;
+    Background "background" (1, Some(1)) "background C" false;
+    Shadows "shadows" (1, Some(1)) "shadows on|off" false;
+    Dither "dither" (1, Some(1)) "dither on|off" false;
+    Group "group" (5, Some(5)) "group N R G B up|down" false;
+    Optimize "optimize" (1, None) "optimize all|none|pixelbuffer extents grid sortlist" false;
+    Scale "scale" (3, Some(3)) "scale SX SY SZ" true;
+    Rotate "rotate" (2, Some(2)) "rotate x|y|z DEG" true;
+    Translate "translate" (3, Some(3)) "translate TX TY TZ" true;
+    Colour "colour" (1, Some(1)) "colour N" true;
+    Ka "ka" (1, Some(1)) "ka V" true;
+    Kd "kd" (1, Some(1)) "kd V" true;
+    Ks "ks" (1, Some(1)) "ks V" true;
+    Pwr "pwr" (1, Some(1)) "pwr V" true;
+    Rnd "rnd" (1, Some(1)) "rnd V" true;
+    Cmy "cmy" (3, Some(3)) "cmy C M Y" true;
+    Reflect "reflect" (1, Some(1)) "reflect R" true;
+    Transmit "transmit" (1, Some(1)) "transmit T" true;
+    Ior "ior" (1, Some(1)) "ior N" true;
+    Depth "depth" (1, Some(1)) "depth N" false;
+    Antialias "antialias" (1, Some(2)) "antialias off | antialias T [L]" false;
 }
 
 /// One statement's arguments, with the helpers that read them and build errors.
