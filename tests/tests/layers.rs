@@ -189,21 +189,27 @@ fn expand_into(prefix: Vec<String>, tree: &str, paths: &mut Vec<Vec<String>>) {
     }
 }
 
-/// Paths written in code (not in `use`): `crate::a::b` and `super::a`.
-fn code_paths(code: &str) -> Vec<Vec<String>> {
-    let mut without_uses = String::new();
+/// The code without its `use` statements.
+fn without_uses(code: &str) -> String {
+    let mut kept = String::new();
     let mut rest = code;
     while let Some(at) = rest.find("use ") {
         let boundary = at == 0 || !rest[..at].chars().last().is_some_and(is_identifier);
         let end = rest[at..].find(';').map_or(rest.len(), |end| at + end + 1);
         if boundary {
-            without_uses.push_str(&rest[..at]);
+            kept.push_str(&rest[..at]);
         } else {
-            without_uses.push_str(&rest[..end]);
+            kept.push_str(&rest[..end]);
         }
         rest = &rest[end..];
     }
-    without_uses.push_str(rest);
+    kept.push_str(rest);
+    kept
+}
+
+/// Paths written in code (not in `use`): `crate::a::b` and `super::a`.
+fn code_paths(code: &str) -> Vec<Vec<String>> {
+    let without_uses = without_uses(code);
     let mut paths = Vec::new();
     for root in ["crate::", "super::"] {
         let mut from = 0;
@@ -308,6 +314,30 @@ impl Crate {
         }
     }
 
+    /// Paths in code that start at one of the file's own submodules (`child::item`).
+    fn child_paths(&self, file: &File) -> Vec<Vec<String>> {
+        let children: Vec<&str> = self
+            .by_module
+            .keys()
+            .filter(|module| module.len() == file.module.len() + 1 && module.starts_with(&file.module))
+            .filter_map(|module| module.last().map(String::as_str))
+            .collect();
+        let code = without_uses(&file.code);
+        let mut paths = Vec::new();
+        for child in children {
+            let pattern = format!("{child}::");
+            for (at, _) in code.match_indices(&pattern) {
+                let before = code[..at].chars().last();
+                if before.is_some_and(|c| is_identifier(c) || c == ':') {
+                    continue;
+                }
+                let tail: String = code[at..].chars().take_while(|&c| is_identifier(c) || c == ':').collect();
+                paths.push(tail.split("::").filter(|s| !s.is_empty()).map(str::to_owned).collect());
+            }
+        }
+        paths
+    }
+
     /// Each file's imports (indices of other files).
     fn imports(&self) -> Vec<BTreeSet<usize>> {
         self.files
@@ -316,6 +346,7 @@ impl Crate {
             .map(|(index, file)| {
                 let uses = use_paths(&file.code).into_iter().filter(|(reexport, _)| !reexport).map(|(_, path)| path);
                 uses.chain(code_paths(&file.code))
+                    .chain(self.child_paths(file))
                     .filter_map(|path| self.resolve(&file.module, &path, 0))
                     .filter(|&target| target != index)
                     .collect()

@@ -2,7 +2,8 @@
 //! (`tracecone`). Side normal is the gradient of x² + y² − z², i.e. (x, y, −z); the thesis's
 //! (x, y, √(1 − z²)) was wrong (digest §11 B3).
 
-use super::{quadratic, Hit, ScaledInterval};
+use super::hit::{self, Hit};
+use super::{quadratic, ScaledInterval};
 use crate::geometry::{Ray, Vector3};
 use crate::number::Number;
 
@@ -76,15 +77,9 @@ fn surfaces<N: Number>(ray: &Ray<N>) -> [Option<(N, Vector3<N>)>; 3] {
 }
 
 pub fn intersect<N: Number>(ray: &Ray<N>, interval: ScaledInterval<N>) -> Option<Hit<N>> {
-    let mut best: Option<Hit<N>> = None;
-    for (t, normal) in surfaces(ray).into_iter().flatten() {
-        if interval.contains(t) && best.is_none_or(|hit| t < hit.t) {
-            best = Some(Hit { t, normal });
-        }
-    }
-    best
+    hit::nearest(surfaces(ray), interval)
 }
 
 pub fn occluded<N: Number>(ray: &Ray<N>, interval: ScaledInterval<N>) -> bool {
-    surfaces(ray).into_iter().flatten().any(|(t, _)| interval.contains(t))
+    hit::any(surfaces(ray), interval)
 }

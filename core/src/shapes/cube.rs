@@ -1,7 +1,8 @@
 //! The unit cube `[0,1]^3` (`tracecube`), by slabs: the ray is inside the cube where it is
 //! between all three pairs of planes. Bounds are inclusive, as in the thesis.
 
-use super::{Hit, ScaledInterval};
+use super::hit::Hit;
+use super::ScaledInterval;
 use crate::geometry::{Ray, Vector3};
 use crate::number::Number;
 

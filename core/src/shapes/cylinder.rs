@@ -1,6 +1,7 @@
 //! The unit cylinder: radius 1 about +z, from z = 0 to z = 1, both caps (`tracecylinder`).
 
-use super::{quadratic, Hit, ScaledInterval};
+use super::hit::{self, Hit};
+use super::{quadratic, ScaledInterval};
 use crate::geometry::{Ray, Vector3};
 use crate::number::Number;
 
@@ -45,15 +46,9 @@ fn surfaces<N: Number>(ray: &Ray<N>) -> [Option<(N, Vector3<N>)>; 4] {
 }
 
 pub fn intersect<N: Number>(ray: &Ray<N>, interval: ScaledInterval<N>) -> Option<Hit<N>> {
-    let mut best: Option<Hit<N>> = None;
-    for (t, normal) in surfaces(ray).into_iter().flatten() {
-        if interval.contains(t) && best.is_none_or(|hit| t < hit.t) {
-            best = Some(Hit { t, normal });
-        }
-    }
-    best
+    hit::nearest(surfaces(ray), interval)
 }
 
 pub fn occluded<N: Number>(ray: &Ray<N>, interval: ScaledInterval<N>) -> bool {
-    surfaces(ray).into_iter().flatten().any(|(t, _)| interval.contains(t))
+    hit::any(surfaces(ray), interval)
 }

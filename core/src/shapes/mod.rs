@@ -15,6 +15,7 @@
 //! scenes use; [`Primitive::is_compiled`] says which are in.
 
 mod bounds;
+mod hit;
 #[cfg(feature = "cone")]
 mod cone;
 #[cfg(feature = "cube")]
@@ -26,17 +27,11 @@ mod quadratic;
 mod sphere;
 
 pub use bounds::{Interval, ScaledInterval};
+pub use hit::Hit;
 
-use crate::geometry::{Ray, Vector3};
+use crate::geometry::Ray;
 use crate::number::Number;
 use crate::model::Primitive;
-
-/// A hit in object space: the ray parameter and the outward normal there (not normalised).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Hit<N> {
-    pub t: N,
-    pub normal: Vector3<N>,
-}
 
 impl Primitive {
     /// The nearest hit with `t` inside `interval`, if any.

@@ -1,6 +1,7 @@
 //! The unit sphere at the origin (`tracesphere`, `stracesphere`).
 
-use super::{quadratic, Hit, ScaledInterval};
+use super::hit::Hit;
+use super::{quadratic, ScaledInterval};
 use crate::geometry::Ray;
 use crate::number::Number;
 
