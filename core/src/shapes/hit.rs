@@ -1,8 +1,10 @@
 //! What a primitive's intersection returns: the hit, and the nearest (`intersect`) or any
 //! (`occluded`) of a primitive's surface crossings.
 
+#[cfg(any(feature = "cone", feature = "cylinder"))]
 use super::ScaledInterval;
 use crate::geometry::Vector3;
+#[cfg(any(feature = "cone", feature = "cylinder"))]
 use crate::number::Number;
 
 /// A hit in object space: the ray parameter and the outward normal there (not normalised).
