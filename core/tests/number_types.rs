@@ -377,7 +377,7 @@ fn ray_sphere_accuracy_benchmark() {
 // ---------------------------------------------------------------------------------------------
 
 use microtrace::pixel::FrameBuffer;
-use microtrace::render::{render_pga, Statistics};
+use microtrace::render::{Pga, Statistics, Whole};
 use microtrace::model::SceneDescription;
 use microtrace::scene::Scene;
 
@@ -395,7 +395,7 @@ fn render<N: Number>(description: &SceneDescription<MAX_OBJECTS>) -> Vec<u8> {
     let (width, height) = (scene.viewport().width(), scene.viewport().height());
     let mut pixels = vec![0u8; usize::from(width) * usize::from(height)];
     let mut frame = FrameBuffer::new(&mut pixels, width, height).unwrap();
-    render_pga(&scene, &mut frame, &mut Statistics::default());
+    microtrace::render::render(&scene, Pga, Whole, &mut frame, &mut Statistics::default());
     pixels
 }
 

@@ -28,11 +28,12 @@ use microtrace::pixel::PixelSink;
 #[cfg(any(feature = "framebuffer", feature = "progressive"))]
 use microtrace::pixel::{FrameBuffer, PixelSource};
 #[cfg(feature = "progressive")]
-use microtrace::render::{render_pga_progressive_sized, PassStatistics};
+use microtrace::render::{PassStatistics, Progressive};
 #[cfg(all(feature = "framebuffer", not(feature = "progressive")))]
-use microtrace::render::render_pga_sized;
+use microtrace::render::Whole;
 #[cfg(not(any(feature = "framebuffer", feature = "progressive")))]
-use microtrace::render::render_pga_streamed_sized;
+use microtrace::render::Streamed;
+use microtrace::render::{Pga, StackSized};
 #[cfg(not(feature = "progressive"))]
 use microtrace::render::Statistics;
 use microtrace::scene::Scene;
@@ -173,7 +174,7 @@ type Passes = PassStatistics;
 #[inline(never)]
 #[cfg(not(any(feature = "framebuffer", feature = "progressive")))]
 fn render<S: PixelSink<u8>>(scene: &PreparedScene, sink: &mut S, statistics: &mut Passes) {
-    render_pga_streamed_sized::<scene::Number, S, { scene::OBJECT_COUNT }, FlashObjects, { scene::TREE_DEPTH }, { scene::ANTIALIAS_ROW }>(scene, sink, statistics);
+    microtrace::render::render(scene, Pga, StackSized::<_, { scene::TREE_DEPTH }, { scene::ANTIALIAS_ROW }>(Streamed), sink, statistics);
 }
 
 /// The framebuffer render (the `framebuffer` feature): Pixelbuffer's fill marked in the
@@ -181,7 +182,7 @@ fn render<S: PixelSink<u8>>(scene: &PreparedScene, sink: &mut S, statistics: &mu
 #[inline(never)]
 #[cfg(all(feature = "framebuffer", not(feature = "progressive")))]
 fn render<S: PixelSink<u8> + PixelSource<u8>>(scene: &PreparedScene, sink: &mut S, statistics: &mut Passes) {
-    render_pga_sized::<scene::Number, S, { scene::OBJECT_COUNT }, FlashObjects, { scene::TREE_DEPTH }, { scene::ANTIALIAS_ROW }>(scene, sink, statistics);
+    microtrace::render::render(scene, Pga, StackSized::<_, { scene::TREE_DEPTH }, { scene::ANTIALIAS_ROW }>(Whole), sink, statistics);
 }
 
 /// The progressive render (the `progressive` feature): coarse to fine, each pass straight into
@@ -189,7 +190,7 @@ fn render<S: PixelSink<u8> + PixelSource<u8>>(scene: &PreparedScene, sink: &mut 
 #[inline(never)]
 #[cfg(feature = "progressive")]
 fn render<S: PixelSink<u8> + PixelSource<u8>>(scene: &PreparedScene, sink: &mut S, statistics: &mut Passes) {
-    render_pga_progressive_sized::<scene::Number, S, { scene::OBJECT_COUNT }, FlashObjects, { scene::TREE_DEPTH }, { scene::ANTIALIAS_ROW }>(scene, sink, statistics);
+    microtrace::render::render(scene, Pga, StackSized::<_, { scene::TREE_DEPTH }, { scene::ANTIALIAS_ROW }>(Progressive), sink, statistics);
 }
 
 #[cfg(not(feature = "progressive"))]

@@ -32,7 +32,7 @@ use microtrace::model::MAX_LIGHTS;
 
 use crate::scene;
 
-/// The stack the render's shadow tables take per object (render/trace.rs: `with_shadow_culling`,
+/// The stack the render's shadow tables take per object (render/shadow_tables.rs: `with_shadow_culling`,
 /// `build_shadow_tables`, and for a scene with several lights `with_more_lights_culling`, whose
 /// tables are sized for every light the format allows).
 const TABLES_PER_OBJECT: usize = size_of::<DirectionChord<scene::Number>>()

@@ -14,7 +14,7 @@ use microtrace::model::SceneError;
 use microtrace::parser::parse;
 use microtrace::model::Rgb888;
 use microtrace::pixel::FrameBuffer;
-use microtrace::render::{render_pga, render_rgb, Statistics};
+use microtrace::render::{Pga, Rgb, Statistics, Whole, render};
 use microtrace::model::{Optimizations, SceneDescription};
 use microtrace::scene::Scene;
 
@@ -100,11 +100,11 @@ fn render_once<N: Number>(description: &SceneDescription<RENDER_CAPACITY>, rgb: 
     let mut statistics = Statistics::default();
     let image = if rgb {
         let mut pixels = vec![[0u8; 3]; count];
-        render_rgb(&*scene, &mut FrameBuffer::new(&mut pixels, width, height).expect("sized"), &mut statistics);
+        render(&*scene, Rgb, Whole, &mut FrameBuffer::new(&mut pixels, width, height).expect("sized"), &mut statistics);
         Image::Rgb(pixels)
     } else {
         let mut pixels = vec![0u8; count];
-        render_pga(&*scene, &mut FrameBuffer::new(&mut pixels, width, height).expect("sized"), &mut statistics);
+        render(&*scene, Pga, Whole, &mut FrameBuffer::new(&mut pixels, width, height).expect("sized"), &mut statistics);
         Image::Pga(pixels)
     };
     assert_eq!(statistics.pixels, count as u64, "{}: every pixel is counted once", N::NAME);

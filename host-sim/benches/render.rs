@@ -4,7 +4,7 @@
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use microtrace::pixel::FrameBuffer;
-use microtrace::render::{render_pga, Statistics};
+use microtrace::render::{Pga, Statistics, Whole, render};
 use microtrace::model::Optimizations;
 use microtrace::scene::Scene;
 use microtrace_sim::scene_file::{self, HOST_MAX_OBJECTS};
@@ -24,7 +24,7 @@ fn renders(c: &mut Criterion) {
             group.bench_with_input(BenchmarkId::new(name, label), &scene, |b, scene| {
                 b.iter(|| {
                     let mut statistics = Statistics::default();
-                    render_pga(&**scene, &mut FrameBuffer::new(&mut pixels, width, height).expect("sized"), &mut statistics);
+                    render(&**scene, Pga, Whole, &mut FrameBuffer::new(&mut pixels, width, height).expect("sized"), &mut statistics);
                     statistics
                 })
             });

@@ -8,7 +8,7 @@ use anyhow::bail;
 use clap::ValueEnum;
 use microtrace::model::Rgb888;
 use microtrace::pixel::FrameBuffer;
-use microtrace::render::{render_pga, render_pga_progressive, render_pga_rows, render_rgb, render_rgb_progressive, render_rgb_rows, PassStatistics, Statistics, PASSES};
+use microtrace::render::{PASSES, PassStatistics, Pga, Progressive, Rgb, Rows, Statistics, Whole, render};
 use microtrace::number::Number;
 use microtrace::model::SceneError;
 use microtrace::model::Viewport;
@@ -112,10 +112,10 @@ pub fn render_scene_on_threads(
                 let mut buffer = vec![0u8; pixel_count];
                 if single_threaded {
                     let frame = FrameBuffer::new(&mut buffer, width, height).expect("buffer sized to the viewport");
-                    render_pga(&*prepared, &mut Progress::new(frame, &report), &mut statistics);
+                    render(&*prepared, Pga, Whole, &mut Progress::new(frame, &report), &mut statistics);
                 } else {
                     statistics = render_in_bands(&mut buffer, width, threads, &report, |sink, rows, statistics| {
-                        render_pga_rows(&*prepared, sink, statistics, rows)
+                        render(&*prepared, Pga, Rows(rows), sink, statistics)
                     })?;
                 }
                 Pixels::Pga(buffer)
@@ -124,10 +124,10 @@ pub fn render_scene_on_threads(
                 let mut buffer = vec![[0u8; 3]; pixel_count];
                 if single_threaded {
                     let frame = FrameBuffer::new(&mut buffer, width, height).expect("buffer sized to the viewport");
-                    render_rgb(&*prepared, &mut Progress::new(frame, &report), &mut statistics);
+                    render(&*prepared, Rgb, Whole, &mut Progress::new(frame, &report), &mut statistics);
                 } else {
                     statistics = render_in_bands(&mut buffer, width, threads, &report, |sink, rows, statistics| {
-                        render_rgb_rows(&*prepared, sink, statistics, rows)
+                        render(&*prepared, Rgb, Rows(rows), sink, statistics)
                     })?;
                 }
                 Pixels::Rgb(buffer)
@@ -139,7 +139,7 @@ pub fn render_scene_on_threads(
 }
 
 /// Prepares and renders `scene` progressively on this thread (`microtrace::render`'s
-/// `render_pga_progressive`): coarse to fine in four passes, the same image as [`render_scene`],
+/// `render(.., Progressive, ..)`): coarse to fine in four passes, the same image as [`render_scene`],
 /// with each pass's statistics. Progress counts each row once per pass.
 pub fn render_scene_progressive(scene: &HostScene, number: NumberKind, mode: Mode, progress: Option<&str>) -> anyhow::Result<Rendered> {
     let viewport = scene.viewport;
@@ -160,13 +160,13 @@ pub fn render_scene_progressive(scene: &HostScene, number: NumberKind, mode: Mod
             Mode::Pga => {
                 let mut buffer = vec![0u8; pixel_count];
                 let frame = FrameBuffer::new(&mut buffer, width, height).expect("buffer sized to the viewport");
-                render_pga_progressive(&*prepared, &mut Progress::new(frame, &report), &mut passes);
+                render(&*prepared, Pga, Progressive, &mut Progress::new(frame, &report), &mut passes);
                 Pixels::Pga(buffer)
             }
             Mode::Rgb => {
                 let mut buffer = vec![[0u8; 3]; pixel_count];
                 let frame = FrameBuffer::new(&mut buffer, width, height).expect("buffer sized to the viewport");
-                render_rgb_progressive(&*prepared, &mut Progress::new(frame, &report), &mut passes);
+                render(&*prepared, Rgb, Progressive, &mut Progress::new(frame, &report), &mut passes);
                 Pixels::Rgb(buffer)
             }
         };

@@ -5,7 +5,7 @@
 use microtrace::number::{Fixed, Number, SoftFloat};
 use microtrace::model::Rgb888;
 use microtrace::pixel::FrameBuffer;
-use microtrace::render::{render_pga, render_pga_rows, render_rgb, Statistics};
+use microtrace::render::{Pga, Rgb, Rows, Statistics, Whole, render};
 use microtrace::model::{Optimizations, SceneDescription};
 use microtrace::scene::Scene;
 
@@ -27,7 +27,7 @@ fn pga<N: Number>(scene: &SceneDescription<CAPACITY>) -> (Vec<u8>, Statistics) {
     let (width, height) = (scene.viewport.width(), scene.viewport.height());
     let mut pixels = vec![0u8; usize::from(width) * usize::from(height)];
     let mut statistics = Statistics::default();
-    render_pga(&*prepared, &mut FrameBuffer::new(&mut pixels, width, height).unwrap(), &mut statistics);
+    render(&*prepared, Pga, Whole, &mut FrameBuffer::new(&mut pixels, width, height).unwrap(), &mut statistics);
     (pixels, statistics)
 }
 
@@ -36,7 +36,7 @@ fn rgb(scene: &SceneDescription<CAPACITY>) -> (Vec<Rgb888>, Statistics) {
     let (width, height) = (scene.viewport.width(), scene.viewport.height());
     let mut pixels = vec![[0u8; 3]; usize::from(width) * usize::from(height)];
     let mut statistics = Statistics::default();
-    render_rgb(&*prepared, &mut FrameBuffer::new(&mut pixels, width, height).unwrap(), &mut statistics);
+    render(&*prepared, Rgb, Whole, &mut FrameBuffer::new(&mut pixels, width, height).unwrap(), &mut statistics);
     (pixels, statistics)
 }
 
@@ -120,7 +120,7 @@ fn bands_give_the_whole_image() {
     let mut pixels = vec![0u8; 96 * 48];
     let mut frame = FrameBuffer::new(&mut pixels, 96, 48).unwrap();
     for band in [0..17, 17..18, 18..48] {
-        render_pga_rows(&*prepared, &mut frame, &mut Statistics::default(), band);
+        render(&*prepared, Pga, Rows(band), &mut frame, &mut Statistics::default());
     }
     assert_eq!(pixels, whole);
 }

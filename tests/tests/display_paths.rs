@@ -15,7 +15,7 @@ use embedded_graphics::pixelcolor::{BinaryColor, Gray4, GrayColor, Rgb565};
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::Rectangle;
 use microtrace::pixel::{FrameBuffer, LutColour, LutGrey, OrderedDither, RowDisplaySink};
-use microtrace::render::{render_pga, Statistics};
+use microtrace::render::{Pga, Statistics, Whole, render};
 use microtrace::model::SceneDescription;
 use microtrace::scene::Scene;
 use microtrace::model::Palette;
@@ -80,7 +80,7 @@ fn host_image(width: u16, height: u16) -> (Vec<u8>, Palette) {
     let scene = Scene::<f32, CAPACITY>::prepare(&description).unwrap();
     let mut pixels = vec![0u8; usize::from(width) * usize::from(height)];
     let mut frame = FrameBuffer::new(&mut pixels, width, height).unwrap();
-    render_pga(&scene, &mut frame, &mut Statistics::default());
+    render(&scene, Pga, Whole, &mut frame, &mut Statistics::default());
     (pixels, description.palette)
 }
 
@@ -101,7 +101,7 @@ where
     let frame = FrameBuffer::new(&mut pixels, width, height).unwrap();
     assert_eq!(scene.palette, description.palette);
     let mut sink = RowDisplaySink::new(frame, target, map);
-    render_pga(&scene, &mut sink, &mut Statistics::default());
+    render(&scene, Pga, Whole, &mut sink, &mut Statistics::default());
     assert_eq!(sink.failed_rows, 0);
     sink.target
 }

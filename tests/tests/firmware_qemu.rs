@@ -1,7 +1,7 @@
 //! The firmware under QEMU renders exactly what the host renders. For both thesis scenes on both
 //! boards (lm3s6965evb, Cortex-M3 with the OLED; mps2-an386, Cortex-M4F) in `f32`:
 //! - `framebuffer.bin` equals, byte for byte, the host's in-process render of the same scene
-//!   (parse, `fit_to_size(128, 64)`, prepare in `f32`, `render_pga` into a `FrameBuffer`);
+//!   (parse, `fit_to_size(128, 64)`, prepare in `f32`, `render(.., Pga, Whole, ..)` into a `FrameBuffer`);
 //! - the firmware counts the same work as the host (every render statistic): it builds the core
 //!   with the same acceleration structures (`acceleration-tables`);
 //! - on the lm3s6965evb, the OLED picture captured from QEMU (`oled.png`) is that framebuffer
@@ -19,7 +19,7 @@ use std::process::Command;
 
 use embedded_graphics::pixelcolor::GrayColor;
 use microtrace::pixel::FrameBuffer;
-use microtrace::render::{render_pga, Statistics};
+use microtrace::render::{Pga, Statistics, Whole, render};
 use microtrace::model::SceneDescription;
 use microtrace::scene::Scene;
 // The budget of firmware/README.md for the lm3s6965evb (64 KB RAM, 256 KB flash): static RAM
@@ -52,7 +52,7 @@ fn host_render_in<N: microtrace::number::Number>(name: &str) -> (SceneDescriptio
     let mut pixels = vec![0u8; WIDTH as usize * HEIGHT as usize];
     let mut frame = FrameBuffer::new(&mut pixels, WIDTH, HEIGHT).unwrap();
     let mut statistics = Statistics::default();
-    render_pga(&scene, &mut frame, &mut statistics);
+    render(&scene, Pga, Whole, &mut frame, &mut statistics);
     (description, pixels, statistics)
 }
 

@@ -23,7 +23,7 @@ use microtrace::geometry::{Ray, Vector3};
 use microtrace::number::{F32Micro, Fixed, Fixed16, Number, SoftFloat};
 use microtrace::model::{SceneError, SceneErrorKind};
 use microtrace::pixel::FrameBuffer;
-use microtrace::render::{in_shadow, nearest_hit, render_pga, shade_pixel, shadow_origin, ShadedPixel, Statistics};
+use microtrace::render::{Pga, ShadedPixel, Statistics, Whole, in_shadow, nearest_hit, shade_pixel, shadow_origin};
 use microtrace::model::SceneDescription;
 use microtrace::light::PreparedLight;
 use microtrace::scene::Scene;
@@ -121,7 +121,7 @@ fn render<N: Number>(description: &SceneDescription<CAPACITY>) -> Result<Renderi
     let (width, height) = (viewport.width(), viewport.height());
     let mut indices = vec![0u8; viewport.pixel_count() as usize];
     let mut frame = FrameBuffer::new(&mut indices, width, height).unwrap();
-    render_pga(&scene, &mut frame, &mut Statistics::default());
+    microtrace::render::render(&scene, Pga, Whole, &mut frame, &mut Statistics::default());
     let mut traces = Vec::with_capacity(indices.len());
     for row in 0..height {
         for column in 0..width {

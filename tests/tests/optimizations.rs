@@ -10,7 +10,7 @@ use microtrace::optimize::bounding_volume::ObjectGeometry;
 use microtrace::optimize::extents::Extent;
 use microtrace::optimize::Acceleration;
 use microtrace::pixel::FrameBuffer;
-use microtrace::render::{render_pga, render_rgb, Statistics};
+use microtrace::render::{Pga, Rgb, Statistics, Whole};
 use microtrace::model::{Light, Material, ObjectDescription, Optimizations, Primitive, Projection, SceneDescription, Viewport, Window};
 use microtrace::scene::Scene;
 
@@ -65,11 +65,11 @@ fn render<N: Number>(description: &SceneDescription<CAPACITY>, rgb: bool) -> (Im
     let count = viewport.pixel_count() as usize;
     let image = if rgb {
         let mut pixels = vec![[0u8; 3]; count];
-        render_rgb(&*scene, &mut FrameBuffer::new(&mut pixels, width, height).unwrap(), &mut statistics);
+        microtrace::render::render(&*scene, Rgb, Whole, &mut FrameBuffer::new(&mut pixels, width, height).unwrap(), &mut statistics);
         Image::Rgb(pixels)
     } else {
         let mut pixels = vec![0u8; count];
-        render_pga(&*scene, &mut FrameBuffer::new(&mut pixels, width, height).unwrap(), &mut statistics);
+        microtrace::render::render(&*scene, Pga, Whole, &mut FrameBuffer::new(&mut pixels, width, height).unwrap(), &mut statistics);
         Image::Pga(pixels)
     };
     (image, statistics)

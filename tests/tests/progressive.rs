@@ -5,7 +5,7 @@
 
 use microtrace::number::Number;
 use microtrace::pixel::FrameBuffer;
-use microtrace::render::{render_pga, render_pga_progressive, render_rgb, render_rgb_progressive, traced_in_pass, PassStatistics, Statistics, PASSES};
+use microtrace::render::{PASSES, PassStatistics, Pga, Progressive, Rgb, Statistics, Whole, render, traced_in_pass};
 use microtrace::model::{Optimizations, SceneDescription};
 use microtrace::scene::Scene;
 
@@ -63,11 +63,11 @@ fn check<N: Number, P: Copy + Default + PartialEq + std::fmt::Debug>(
 }
 
 fn pga<N: Number>(name: &str) {
-    check::<N, u8>(name, |scene, sink, statistics| render_pga(scene, sink, statistics), |scene, sink, passes| render_pga_progressive(scene, sink, passes), "pga");
+    check::<N, u8>(name, |scene, sink, statistics| render(scene, Pga, Whole, sink, statistics), |scene, sink, passes| render(scene, Pga, Progressive, sink, passes), "pga");
 }
 
 fn rgb<N: Number>(name: &str) {
-    check::<N, [u8; 3]>(name, |scene, sink, statistics| render_rgb(scene, sink, statistics), |scene, sink, passes| render_rgb_progressive(scene, sink, passes), "rgb");
+    check::<N, [u8; 3]>(name, |scene, sink, statistics| render(scene, Rgb, Whole, sink, statistics), |scene, sink, passes| render(scene, Rgb, Progressive, sink, passes), "rgb");
 }
 
 #[test]

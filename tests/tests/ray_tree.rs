@@ -4,7 +4,7 @@
 use microtrace::number::{F32Micro, Fixed, Fixed16, Number, SoftFloat};
 use microtrace::model::Rgb888;
 use microtrace::pixel::FrameBuffer;
-use microtrace::render::{render_pga, render_rgb, Statistics};
+use microtrace::render::{Pga, Rgb, Statistics, Whole, render};
 use microtrace::optimize::space_grid::SpaceGrid;
 use microtrace::model::{Optimizations, SceneDescription};
 use microtrace::scene::Scene;
@@ -57,7 +57,7 @@ fn pga_with<N: Number>(scene: &SceneDescription<CAPACITY>, secondary: Secondary)
     let (width, height) = (scene.viewport.width(), scene.viewport.height());
     let mut pixels = vec![0u8; usize::from(width) * usize::from(height)];
     let mut statistics = Statistics::default();
-    render_pga(&*prepared, &mut FrameBuffer::new(&mut pixels, width, height).unwrap(), &mut statistics);
+    render(&*prepared, Pga, Whole, &mut FrameBuffer::new(&mut pixels, width, height).unwrap(), &mut statistics);
     (pixels, statistics)
 }
 
@@ -66,7 +66,7 @@ fn pga<N: Number>(scene: &SceneDescription<CAPACITY>, brute_force: bool) -> (Vec
     let (width, height) = (scene.viewport.width(), scene.viewport.height());
     let mut pixels = vec![0u8; usize::from(width) * usize::from(height)];
     let mut statistics = Statistics::default();
-    render_pga(&*prepared, &mut FrameBuffer::new(&mut pixels, width, height).unwrap(), &mut statistics);
+    render(&*prepared, Pga, Whole, &mut FrameBuffer::new(&mut pixels, width, height).unwrap(), &mut statistics);
     (pixels, statistics)
 }
 
@@ -75,7 +75,7 @@ fn rgb<N: Number>(scene: &SceneDescription<CAPACITY>) -> (Vec<Rgb888>, Statistic
     let (width, height) = (scene.viewport.width(), scene.viewport.height());
     let mut pixels = vec![[0u8; 3]; usize::from(width) * usize::from(height)];
     let mut statistics = Statistics::default();
-    render_rgb(&*prepared, &mut FrameBuffer::new(&mut pixels, width, height).unwrap(), &mut statistics);
+    render(&*prepared, Rgb, Whole, &mut FrameBuffer::new(&mut pixels, width, height).unwrap(), &mut statistics);
     (pixels, statistics)
 }
 

@@ -174,7 +174,7 @@ fn each_display_preview_shows_the_core_image_through_its_mapping() {
             fitted.fit_to_size(width, height);
             let prepared = microtrace::scene::Scene::<f64, 64>::prepare(&fitted).unwrap();
             let mut indices = vec![0u8; usize::from(width) * usize::from(height)];
-            microtrace::render::render_pga(&prepared, &mut FrameBuffer::new(&mut indices, width, height).unwrap(), &mut microtrace::render::Statistics::default());
+            microtrace::render::render(&prepared, microtrace::render::Pga, microtrace::render::Whole, &mut FrameBuffer::new(&mut indices, width, height).unwrap(), &mut microtrace::render::Statistics::default());
             let palette = &fitted.palette;
             let expected: Vec<[u8; 3]> = indices
                 .iter()

@@ -6,7 +6,7 @@
 
 use microtrace::number::{Fixed, Number, SoftFloat};
 use microtrace::pixel::FrameBuffer;
-use microtrace::render::{render_pga, Statistics};
+use microtrace::render::{Pga, Statistics, Whole};
 use microtrace::model::SceneDescription;
 use microtrace::scene::Scene;
 
@@ -24,7 +24,7 @@ fn render<N: Number>(description: &SceneDescription<CAPACITY>) -> (Vec<u8>, Stat
     let mut pixels = vec![0u8; viewport.pixel_count() as usize];
     let mut frame = FrameBuffer::new(&mut pixels, viewport.width(), viewport.height()).unwrap();
     let mut statistics = Statistics::default();
-    render_pga(&scene, &mut frame, &mut statistics);
+    microtrace::render::render(&scene, Pga, Whole, &mut frame, &mut statistics);
     (pixels, statistics)
 }
 

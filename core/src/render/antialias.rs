@@ -31,7 +31,7 @@ use crate::scene::{Objects, PreparedAntialias, Scene};
 
 type Rgb = [u8; 3];
 
-/// How many corners an antialiased render keeps of a row ([`super::render_pga`], [`super::render_rgb`]): an
+/// How many corners an antialiased render keeps of a row ([`super::render`] with the default stack): an
 /// image up to 2,048 pixels wide shares every corner (6 KB of stack); a wider one traces the
 /// corners beyond again.
 pub const ANTIALIAS_ROW: usize = 2049;

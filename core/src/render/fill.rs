@@ -14,8 +14,12 @@ use crate::scene::{Objects, Scene};
 /// Pixelbuffer's fill colour in PGA mode (the thesis's default `fillcolor`); the flood is its
 /// complement, so the two always differ.
 pub const PGA_FILL: u8 = 112;
+/// PGA mode's flood: the fill's complement.
+pub const PGA_FLOOD: u8 = PGA_FILL ^ 0xFF;
 /// Pixelbuffer's fill colour in RGB mode; the flood is its complement.
 pub const RGB_FILL: [u8; 3] = [112, 0, 255];
+/// RGB mode's flood: the fill's complement.
+pub const RGB_FLOOD: [u8; 3] = [RGB_FILL[0] ^ 0xFF, RGB_FILL[1] ^ 0xFF, RGB_FILL[2] ^ 0xFF];
 
 /// Pixelbuffer's preprocess (`initpga` and `rendervolume`): flood the viewport, then fill
 /// every object's extent octagon (its silhouette's rectangle cut by the two diagonal ranges,

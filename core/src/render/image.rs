@@ -2,76 +2,24 @@
 
 use core::ops::Range;
 
-use super::antialias::{render_antialiased, ANTIALIAS_ROW};
-use super::fill::{fill_volumes_rows, PGA_FILL, RGB_FILL};
-use super::mode::{Mode, PgaNodes, RgbNodes};
+use super::antialias::render_antialiased;
+use super::fill::fill_volumes_rows;
+use super::mode::Mode;
 use super::pixel_value::pixel_value;
 use super::shadow_ray::ShadowCache;
 use super::shadow_tables::with_shadow_culling;
 use super::Statistics;
-use crate::model::{Rgb888, MAX_DEPTH};
 use crate::number::Number;
 use crate::pixel::{PixelSink, PixelSource};
 use crate::scene::{Objects, Scene};
 
-/// Renders the scene in PGA mode: one palette index per pixel, rows top first, calling
-/// `row_done` after each row.
-pub fn render_pga<N, S, const MAX_OBJECTS: usize, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, statistics: &mut Statistics)
-where
-    N: Number,
-    S: PixelSink<u8> + PixelSource<u8>,
-{
-    render_pga_rows(scene, sink, statistics, 0..scene.viewport().height())
-}
-
-/// [`render_pga`] with its stack sized for the scene (the firmware's): an explicit stack for a
-/// ray tree at most `DEPTH` generations deep (a scene's deeper `depth` is cut there;
-/// [`render_pga`] allows the format's deepest, 8), and a row of `ROW` corners for antialiasing
-/// (the image's width plus one shares every corner; fewer traces some twice).
-pub fn render_pga_sized<N, S, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize, const ROW: usize>(scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, statistics: &mut Statistics)
-where
-    N: Number,
-    S: PixelSink<u8> + PixelSource<u8>,
-{
-    let nodes = PgaNodes { scene };
-    render::<N, u8, S, _, MAX_OBJECTS, O, DEPTH, ROW>(scene, sink, statistics, 0..scene.camera.height(), scene.background, (PGA_FILL, PGA_FILL ^ 0xFF), &nodes)
-}
-
-/// [`render_pga`] of the image rows `rows` only (a band, for one of several threads): the
-/// sink receives only those rows. Every pixel's value equals the whole render's; the
-/// statistics are the band's (the hit and shadow caches start empty at its first row).
-pub fn render_pga_rows<N, S, const MAX_OBJECTS: usize, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, statistics: &mut Statistics, rows: Range<u16>)
-where
-    N: Number,
-    S: PixelSink<u8> + PixelSource<u8>,
-{
-    let nodes = PgaNodes { scene };
-    render::<N, u8, S, _, MAX_OBJECTS, O, { MAX_DEPTH as usize }, ANTIALIAS_ROW>(scene, sink, statistics, rows, scene.background, (PGA_FILL, PGA_FILL ^ 0xFF), &nodes)
-}
-
-/// Renders the scene in RGB mode (see `shading::rgb` for how it differs from the thesis).
-pub fn render_rgb<N, S, const MAX_OBJECTS: usize, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, statistics: &mut Statistics)
-where
-    N: Number,
-    S: PixelSink<Rgb888> + PixelSource<Rgb888>,
-{
-    render_rgb_rows(scene, sink, statistics, 0..scene.viewport().height())
-}
-
-/// [`render_rgb`] of the image rows `rows` only (see [`render_pga_rows`]).
-pub fn render_rgb_rows<N, S, const MAX_OBJECTS: usize, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, statistics: &mut Statistics, rows: Range<u16>)
-where
-    N: Number,
-    S: PixelSink<Rgb888> + PixelSource<Rgb888>,
-{
-    let nodes = RgbNodes { scene };
-    render::<N, Rgb888, S, _, MAX_OBJECTS, O, { MAX_DEPTH as usize }, ANTIALIAS_ROW>(scene, sink, statistics, rows, scene.background_rgb(), (RGB_FILL, RGB_FILL.map(|c| c ^ 0xFF)), &nodes)
-}
-
 /// Pixels read back per `read_row` call (a stack buffer; no row-sized buffer is needed).
 const READ_CHUNK: usize = 32;
 
-fn render<N, P, S, M, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize, const ROW: usize>(
+/// The image rows `rows` into a sink that Pixelbuffer's marks are read back from (the orders
+/// `Whole` and `Rows`).
+#[allow(clippy::too_many_arguments)]
+pub(super) fn render_rows<N, P, S, M, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize, const ROW: usize>(
     scene: &Scene<N, MAX_OBJECTS, O>,
     sink: &mut S,
     statistics: &mut Statistics,

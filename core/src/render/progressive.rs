@@ -8,7 +8,7 @@
 //! block. Every pixel is traced exactly once over the four passes, and a pass's blocks cover
 //! only pixels not yet traced: the blocks of size `s` tile the image, and the only traced pixel
 //! inside one is its own top left corner. So every pixel is last written with its own value, and
-//! the final image is the normal render's ([`super::render_pga`]), byte for byte.
+//! the final image is the normal render's (the order `Whole`), byte for byte.
 //!
 //! The pixels go straight to the sink (`fill_row` for a block's rows, `set_pixel` in the last
 //! pass): it can be a display's own RAM, with no second framebuffer, and it is never read back.
@@ -23,17 +23,15 @@
 //! row is reported once per pass (four times in all); a display flushes there.
 
 use super::shadow_ray::ShadowCache;
-use super::antialias::{render_antialiased, ANTIALIAS_ROW};
-use super::mode::{Mode, PgaNodes, RgbNodes};
+use super::antialias::render_antialiased;
+use super::mode::Mode;
 use super::pixel_value::pixel_value;
 use super::shadow_tables::with_shadow_culling;
 use super::fill::RowCoverage;
 use super::shadow_ray::ShadowCulling;
 use super::Statistics;
 use crate::number::Number;
-use crate::model::Rgb888;
 use crate::pixel::PixelSink;
-use crate::model::MAX_DEPTH;
 use crate::scene::{Objects, Scene};
 
 /// How many passes a progressive render makes.
@@ -59,70 +57,44 @@ impl PassStatistics {
     }
 }
 
-/// Renders the scene in PGA mode progressively (see the module's documentation), adding each
-/// pass's counts to `statistics.passes`. The final image equals [`super::render_pga`]'s.
-pub fn render_pga_progressive<N, S, const MAX_OBJECTS: usize, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, statistics: &mut PassStatistics)
-where
-    N: Number,
-    S: PixelSink<u8>,
-{
-    render_pga_progressive_sized::<N, S, MAX_OBJECTS, O, { MAX_DEPTH as usize }, ANTIALIAS_ROW>(scene, sink, statistics);
-}
-
-/// [`render_pga_progressive`] with its stack sized for the scene (the firmware's), as
-/// [`super::render_pga_sized`]: a ray tree at most `DEPTH` generations deep and an antialiasing
-/// row of `ROW` corners.
-pub fn render_pga_progressive_sized<N, S, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize, const ROW: usize>(
+/// Every pass in turn, each pass's counts added to `statistics.passes` (the order
+/// `Progressive`): one shadow cache and one set of the light's tables for all of them.
+pub(super) fn progressive<N, P, S, M, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize, const ROW: usize>(
     scene: &Scene<N, MAX_OBJECTS, O>,
     sink: &mut S,
     statistics: &mut PassStatistics,
+    background: P,
+    mode: &M,
 ) where
     N: Number,
-    S: PixelSink<u8>,
+    P: Copy,
+    S: PixelSink<P>,
+    M: Mode<N, Pixel = P>,
 {
     with_shadow_culling(scene, |culling| {
         let mut cache = ShadowCache::default();
         for (pass, counts) in statistics.passes.iter_mut().enumerate() {
-            trace_pass::<N, u8, S, _, MAX_OBJECTS, O, DEPTH, ROW>(scene, sink, counts, pass, &mut cache, culling, scene.background, &PgaNodes { scene });
+            trace_pass::<N, P, S, M, MAX_OBJECTS, O, DEPTH, ROW>(scene, sink, counts, pass, &mut cache, culling, background, mode);
         }
     })
 }
 
-/// Renders the scene in RGB mode progressively; the final image equals [`super::render_rgb`]'s.
-pub fn render_rgb_progressive<N, S, const MAX_OBJECTS: usize, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, statistics: &mut PassStatistics)
-where
+/// Pass `pass` alone (the order `Pass`), with its own shadow cache and light's tables.
+pub(super) fn single_pass<N, P, S, M, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize, const ROW: usize>(
+    scene: &Scene<N, MAX_OBJECTS, O>,
+    sink: &mut S,
+    statistics: &mut Statistics,
+    pass: usize,
+    background: P,
+    mode: &M,
+) where
     N: Number,
-    S: PixelSink<Rgb888>,
+    P: Copy,
+    S: PixelSink<P>,
+    M: Mode<N, Pixel = P>,
 {
     with_shadow_culling(scene, |culling| {
-        let mut cache = ShadowCache::default();
-        for (pass, counts) in statistics.passes.iter_mut().enumerate() {
-            trace_pass::<N, Rgb888, S, _, MAX_OBJECTS, O, { MAX_DEPTH as usize }, ANTIALIAS_ROW>(scene, sink, counts, pass, &mut cache, culling, scene.background_rgb(), &RgbNodes { scene });
-        }
-    })
-}
-
-/// Pass `pass` (0..[`PASSES`]) of [`render_pga_progressive`] alone, for a caller that does
-/// something between passes: run 0, 1, 2, 3 in turn for the whole render. A pass beyond the last
-/// does nothing.
-pub fn render_pga_pass<N, S, const MAX_OBJECTS: usize, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, pass: usize, statistics: &mut Statistics)
-where
-    N: Number,
-    S: PixelSink<u8>,
-{
-    with_shadow_culling(scene, |culling| {
-        trace_pass::<N, u8, S, _, MAX_OBJECTS, O, { MAX_DEPTH as usize }, ANTIALIAS_ROW>(scene, sink, statistics, pass, &mut ShadowCache::default(), culling, scene.background, &PgaNodes { scene });
-    })
-}
-
-/// Pass `pass` of [`render_rgb_progressive`] alone (see [`render_pga_pass`]).
-pub fn render_rgb_pass<N, S, const MAX_OBJECTS: usize, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, pass: usize, statistics: &mut Statistics)
-where
-    N: Number,
-    S: PixelSink<Rgb888>,
-{
-    with_shadow_culling(scene, |culling| {
-        trace_pass::<N, Rgb888, S, _, MAX_OBJECTS, O, { MAX_DEPTH as usize }, ANTIALIAS_ROW>(scene, sink, statistics, pass, &mut ShadowCache::default(), culling, scene.background_rgb(), &RgbNodes { scene });
+        trace_pass::<N, P, S, M, MAX_OBJECTS, O, DEPTH, ROW>(scene, sink, statistics, pass, &mut ShadowCache::default(), culling, background, mode);
     })
 }
 

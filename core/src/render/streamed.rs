@@ -2,19 +2,19 @@
 //! once, left to right, and `row_done` after each row, so the sink can send the row on (to a
 //! display's own RAM, to a host) and forget it. No framebuffer is needed.
 //!
-//! Pixelbuffer's fill (§4.7.2) is the same as [`super::render_pga`]'s ([`super::fill_volumes_rows`]),
+//! Pixelbuffer's fill (§4.7.2) is the same as the order `Whole`'s ([`super::fill_volumes_rows`]),
 //! recorded one row at a time as spans on the stack (`RowCoverage`, as the progressive render
 //! does) instead of marked in the sink and read back (`PixelSource::read_row`): a pixel outside
 //! every object's fill is the background with no ray, a pixel inside is traced. The pixels are
 //! traced in the same order with the same caches, so the image and every statistic equal
-//! [`super::render_pga`]'s and [`super::render_pga_sized`]'s (the tests check it: both thesis
+//! the order `Whole`'s, sized or not (the tests check it: both thesis
 //! scenes, every combination of the optimizations, several number types, antialiasing and the
 //! ray tree).
 //!
 //! What the sink sees: for each row, runs of the background (`fill_row`, one per run of pixels
 //! outside the fill) and traced pixels (`set_pixel`), covering the row exactly once, then
 //! `row_done`. Never `mark_row`. An antialiased scene goes through the same antialiased render as
-//! [`super::render_pga`] (it needs no read-back either: one row of corners on the stack).
+//! the order `Whole` (it needs no read-back either: one row of corners on the stack).
 //!
 //! Memory: the row's coverage, 4 bytes an object plus a few, on the stack while the row is
 //! traced.
@@ -28,46 +28,16 @@
 use super::antialias::render_antialiased;
 use super::fill::RowCoverage;
 use super::shadow_ray::ShadowCache;
-use super::antialias::ANTIALIAS_ROW;
-use super::mode::{Mode, PgaNodes, RgbNodes};
+use super::mode::Mode;
 use super::pixel_value::pixel_value;
 use super::shadow_tables::with_shadow_culling;
 use super::Statistics;
 use crate::number::Number;
-use crate::model::Rgb888;
 use crate::pixel::PixelSink;
-use crate::model::MAX_DEPTH;
 use crate::scene::{Objects, Scene};
 
-/// [`super::render_pga`] into a sink that is never read: each row written once and then done.
-pub fn render_pga_streamed<N, S, const MAX_OBJECTS: usize, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, statistics: &mut Statistics)
-where
-    N: Number,
-    S: PixelSink<u8>,
-{
-    render_pga_streamed_sized::<N, S, MAX_OBJECTS, O, { MAX_DEPTH as usize }, ANTIALIAS_ROW>(scene, sink, statistics);
-}
-
-/// [`super::render_pga_sized`] into a sink that is never read: its stack sized for the scene
-/// (a ray tree at most `DEPTH` generations deep, a row of `ROW` antialiasing corners).
-pub fn render_pga_streamed_sized<N, S, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize, const ROW: usize>(scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, statistics: &mut Statistics)
-where
-    N: Number,
-    S: PixelSink<u8>,
-{
-    streamed::<N, u8, S, _, MAX_OBJECTS, O, DEPTH, ROW>(scene, sink, statistics, scene.background, &PgaNodes { scene });
-}
-
-/// [`super::render_rgb`] into a sink that is never read.
-pub fn render_rgb_streamed<N, S, const MAX_OBJECTS: usize, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, statistics: &mut Statistics)
-where
-    N: Number,
-    S: PixelSink<Rgb888>,
-{
-    streamed::<N, Rgb888, S, _, MAX_OBJECTS, O, { MAX_DEPTH as usize }, ANTIALIAS_ROW>(scene, sink, statistics, scene.background_rgb(), &RgbNodes { scene });
-}
-
-fn streamed<N, P, S, M, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize, const ROW: usize>(
+/// The whole image into a sink that is never read (the order `Streamed`).
+pub(super) fn streamed<N, P, S, M, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize, const ROW: usize>(
     scene: &Scene<N, MAX_OBJECTS, O>,
     sink: &mut S,
     statistics: &mut Statistics,

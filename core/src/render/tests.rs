@@ -26,7 +26,7 @@ fn sphere_scene(material: Material, light: Light) -> SceneDescription<4> {
 fn centre_pixel(description: &SceneDescription<4>) -> (u8, u8) {
     let scene = Scene::<f64, 4>::prepare(description).unwrap();
     let mut sink = MockSink::<u8, 5, 5>::new(0);
-    render_pga(&scene, &mut sink, &mut Statistics::default());
+    render(&scene, Pga, Whole, &mut sink, &mut Statistics::default());
     (sink.pixels[2][2], sink.pixels[0][0])
 }
 
@@ -105,7 +105,7 @@ fn rgb_mode_adds_light_and_reflects_one_minus_cmy() {
     let description = sphere_scene(material, Light::Direction([0.0, 0.0, 1.0]));
     let scene = Scene::<f64, 4>::prepare(&description).unwrap();
     let mut sink = MockSink::<[u8; 3], 5, 5>::new([0; 3]);
-    render_rgb(&scene, &mut sink, &mut Statistics::default());
+    render(&scene, Rgb, Whole, &mut sink, &mut Statistics::default());
     // 255·(0.5 + 0.2)·ρ with ρ = (1, 0.5, 0): 178.5 -> 179 (clipped at 254.9 first), 89.25 -> 89, 0.
     assert_eq!(sink.pixels[2][2], [179, 89, 0]);
     // Background through the look-up table: index 7 of the grey default is (7,7,7) -> 119.
@@ -120,7 +120,7 @@ fn statistics_count_pixels_rays_and_tests() {
     let scene = Scene::<f64, 4>::prepare(&description).unwrap();
     let mut sink = MockSink::<u8, 5, 5>::new(0);
     let mut statistics = Statistics::default();
-    render_pga(&scene, &mut sink, &mut statistics);
+    render(&scene, Pga, Whole, &mut sink, &mut statistics);
     // Pixels at distance ≤ 1 from the centre hit: the centre and its 4 neighbours.
     assert_eq!(statistics.pixels, 25);
     assert_eq!(statistics.rays_traced, 25);
@@ -137,12 +137,12 @@ fn bands_render_the_same_pixels_as_the_whole_image() {
     description.optimizations = crate::model::Optimizations::ALL;
     let scene = Scene::<f64, 4>::prepare(&description).unwrap();
     let mut whole = MockSink::<u8, 5, 5>::new(0);
-    render_pga(&scene, &mut whole, &mut Statistics::default());
+    render(&scene, Pga, Whole, &mut whole, &mut Statistics::default());
     let mut banded = MockSink::<u8, 5, 5>::new(0);
     for (first, end) in [(0, 2), (2, 3), (3, 3), (3, 5)] {
         let mut band = MockSink::<u8, 5, 5>::new(0);
         let mut statistics = Statistics::default();
-        render_pga_rows(&scene, &mut band, &mut statistics, first..end);
+        render(&scene, Pga, Rows(first..end), &mut band, &mut statistics);
         assert_eq!(statistics.pixels, 5 * u64::from(end - first));
         for row in 0..5 {
             if (first..end).contains(&row) {

@@ -368,6 +368,11 @@ impl<N: Number, const MAX_OBJECTS: usize, O: Objects<N>> Scene<N, MAX_OBJECTS, O
         }
     }
 
+    /// The background in PGA mode: its palette index.
+    pub fn background_index(&self) -> u8 {
+        self.background
+    }
+
     /// The background in RGB mode: the look-up table's colour for the background index (the
     /// thesis wrote the index into the red byte only, digest §11 B7).
     pub fn background_rgb(&self) -> [u8; 3] {

@@ -15,7 +15,7 @@ use std::time::Instant;
 use anyhow::Context;
 use microtrace::optimize::{Acceleration, Tuning};
 use microtrace::pixel::FrameBuffer;
-use microtrace::render::{render_pga, Statistics};
+use microtrace::render::{Pga, Statistics, Whole, render};
 use microtrace::model::Optimizations;
 use microtrace::scene::Scene;
 
@@ -47,7 +47,7 @@ pub fn render_tuned(scene: &HostScene, optimizations: Optimizations, tuning: Tun
     let started = Instant::now();
     // Single-threaded on purpose, never `render --threads`: the tables reproduce the thesis's
     // one-processor times and its statistics, which bands would change (caches restart per band).
-    render_pga(&*prepared, &mut FrameBuffer::new(&mut pixels, width, height).expect("sized"), &mut statistics);
+    render(&*prepared, Pga, Whole, &mut FrameBuffer::new(&mut pixels, width, height).expect("sized"), &mut statistics);
     Ok(Rendered { statistics, preprocess, trace: started.elapsed(), pixels })
 }
 

@@ -23,7 +23,7 @@ use embedded_graphics::text::{Baseline, Text};
 use embedded_graphics_simulator::sdl2::Keycode;
 use embedded_graphics_simulator::{OutputSettings, OutputSettingsBuilder, SimulatorDisplay, SimulatorEvent};
 use microtrace::pixel::FrameBuffer;
-use microtrace::render::{render_pga, render_pga_progressive, render_rgb, render_rgb_progressive, PassStatistics, Statistics};
+use microtrace::render::{PassStatistics, Pga, Progressive, Rgb, Statistics, Whole};
 use microtrace::model::{Antialias, Optimizations};
 use microtrace::scene::Scene;
 
@@ -388,8 +388,8 @@ fn render(scene: &HostScene, settings: &Settings, display: &mut SimulatorDisplay
                 let frame = FrameBuffer::new(&mut buffer, width, height).expect("buffer sized to the viewport");
                 let mut sink = ui::sink::WindowSink::new(frame, display, &palette, Some(view));
                 match &mut passes {
-                    Some(passes) => render_pga_progressive(&*prepared, &mut sink, passes),
-                    None => render_pga(&*prepared, &mut sink, &mut statistics),
+                    Some(passes) => microtrace::render::render(&*prepared, Pga, Progressive, &mut sink, passes),
+                    None => microtrace::render::render(&*prepared, Pga, Whole, &mut sink, &mut statistics),
                 }
                 Pixels::Pga(buffer)
             }
@@ -398,8 +398,8 @@ fn render(scene: &HostScene, settings: &Settings, display: &mut SimulatorDisplay
                 let frame = FrameBuffer::new(&mut buffer, width, height).expect("buffer sized to the viewport");
                 let mut sink = ui::sink::WindowSink::new(frame, display, &palette, Some(view));
                 match &mut passes {
-                    Some(passes) => render_rgb_progressive(&*prepared, &mut sink, passes),
-                    None => render_rgb(&*prepared, &mut sink, &mut statistics),
+                    Some(passes) => microtrace::render::render(&*prepared, Rgb, Progressive, &mut sink, passes),
+                    None => microtrace::render::render(&*prepared, Rgb, Whole, &mut sink, &mut statistics),
                 }
                 Pixels::Rgb(buffer)
             }

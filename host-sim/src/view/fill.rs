@@ -85,7 +85,7 @@ impl PixelbufferFill {
 #[cfg(test)]
 mod tests {
     use microtrace::pixel::{FrameBuffer, PixelSource};
-    use microtrace::render::{render_pga, Statistics};
+    use microtrace::render::{Pga, Statistics, Whole, render};
 
     use microtrace::pixel::PixelSink;
 
@@ -113,7 +113,7 @@ mod tests {
         let fill = PixelbufferFill::record(&*scene).of_pixels(antialias.step(), width, height);
         let mut buffer = vec![0u8; usize::from(width) * usize::from(height)];
         let mut frame = FrameBuffer::new(&mut buffer, width, height).unwrap();
-        render_pga(&*scene, &mut frame, &mut Statistics::default());
+        render(&*scene, Pga, Whole, &mut frame, &mut Statistics::default());
         assert!(fill.count() > 0 && fill.count() < usize::from(width) * usize::from(height), "the fill marks some pixels, not all");
         for y in 0..height {
             for x in 0..width {
@@ -136,7 +136,7 @@ mod tests {
             let mut buffer = vec![0u8; usize::from(width) * usize::from(height)];
             let mut frame = FrameBuffer::new(&mut buffer, width, height).unwrap();
             let mut statistics = Statistics::default();
-            render_pga(&*scene, &mut frame, &mut statistics);
+            render(&*scene, Pga, Whole, &mut frame, &mut statistics);
             assert_eq!(statistics.rays_traced, fill.count() as u64, "{name}");
             assert!(fill.count() > 0 && fill.count() < usize::from(width) * usize::from(height), "{name}: fill marks some pixels, not all");
             for y in 0..height {

@@ -16,7 +16,7 @@ use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::{PrimitiveStyle, Rectangle};
 use embedded_graphics_simulator::SimulatorDisplay;
 use microtrace::pixel::{ColourMap, FrameBuffer, LutColour, LutGrey, OrderedDither, RowDisplaySink};
-use microtrace::render::{render_pga, Statistics};
+use microtrace::render::{Pga, Statistics, Whole};
 use microtrace::scene::Scene;
 
 use microtrace::number::NumberKind;
@@ -129,7 +129,7 @@ where
     let mut sink = RowDisplaySink::new(frame, target, map);
     with_number_kind!(number, N => {
         let prepared = Box::new(Scene::<N, HOST_MAX_OBJECTS>::prepare(fitted).map_err(anyhow::Error::new)?);
-        render_pga(&*prepared, &mut sink, &mut Statistics::default());
+        microtrace::render::render(&*prepared, Pga, Whole, &mut sink, &mut Statistics::default());
     });
     Ok(())
 }

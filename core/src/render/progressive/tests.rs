@@ -1,8 +1,9 @@
 //! The passes' order, blocks and counts, on a mock sink.
 
 use super::*;
+use crate::model::Rgb888;
 use crate::pixel::MockSink;
-use crate::render::render_pga;
+use crate::render::{Pass, Pga, Progressive, Rgb, Whole, render};
 use crate::model::{Light, Material, ObjectDescription, Optimizations, Primitive, Projection, SceneDescription, Viewport, Window};
 
 const W: usize = 21;
@@ -33,7 +34,7 @@ fn scene(optimizations: Optimizations) -> Scene<f64, 4> {
 fn normal_render(scene: &Scene<f64, 4>) -> (MockSink<u8, W, H>, Statistics) {
     let mut sink = MockSink::new(0);
     let mut statistics = Statistics::default();
-    render_pga(scene, &mut sink, &mut statistics);
+    render(scene, Pga, Whole, &mut sink, &mut statistics);
     (sink, statistics)
 }
 
@@ -66,7 +67,7 @@ fn each_pass_shows_every_block_in_its_corner_pixels_final_value() {
     for (pass, &size) in PASS_SIZES.iter().enumerate() {
         let writes_before = sink.writes;
         let mut statistics = Statistics::default();
-        render_pga_pass(&scene, &mut sink, pass, &mut statistics);
+        render(&scene, Pga, Pass(pass), &mut sink, &mut statistics);
         let s = usize::from(size);
         for y in 0..H {
             for x in 0..W {
@@ -93,7 +94,7 @@ fn every_pixel_is_last_written_in_its_own_pass() {
     let (reference, normal) = normal_render(&scene);
     let mut sink = MockSink::<u8, W, H>::new(0);
     let mut statistics = PassStatistics::default();
-    render_pga_progressive(&scene, &mut sink, &mut statistics);
+    render(&scene, Pga, Progressive, &mut sink, &mut statistics);
     assert_eq!(sink.pixels, reference.pixels);
     // The writes' numbers at which each pass ended, from the block sizes.
     let mut ends = [0u32; PASSES];
@@ -132,7 +133,7 @@ fn pixelbuffer_coverage_traces_the_pixels_the_normal_render_traces() {
         let (reference, normal) = normal_render(&scene);
         let mut sink = MockSink::<u8, W, H>::new(0);
         let mut statistics = PassStatistics::default();
-        render_pga_progressive(&scene, &mut sink, &mut statistics);
+        render(&scene, Pga, Progressive, &mut sink, &mut statistics);
         assert_eq!(sink.pixels, reference.pixels, "{optimizations:?}");
         assert_eq!(statistics.total().rays_traced, normal.rays_traced, "{optimizations:?}");
     }
@@ -142,14 +143,14 @@ fn pixelbuffer_coverage_traces_the_pixels_the_normal_render_traces() {
 fn rgb_mode_ends_with_the_normal_image() {
     let scene = scene(Optimizations::ALL);
     let mut reference = MockSink::<Rgb888, W, H>::new([0; 3]);
-    crate::render::render_rgb(&scene, &mut reference, &mut Statistics::default());
+    crate::render::render(&scene, crate::render::Rgb, crate::render::Whole, &mut reference, &mut Statistics::default());
     let mut sink = MockSink::<Rgb888, W, H>::new([0; 3]);
     let mut statistics = PassStatistics::default();
-    render_rgb_progressive(&scene, &mut sink, &mut statistics);
+    render(&scene, Rgb, Progressive, &mut sink, &mut statistics);
     assert_eq!(sink.pixels, reference.pixels);
     // After the first pass alone, the block corners' colours.
     let mut first = MockSink::<Rgb888, W, H>::new([0; 3]);
-    render_rgb_pass(&scene, &mut first, 0, &mut Statistics::default());
+    render(&scene, Rgb, Pass(0), &mut first, &mut Statistics::default());
     assert_eq!(first.pixels[12][20], reference.pixels[8][16]);
     assert_eq!(first.pixels[5][3], reference.pixels[0][0]);
 }

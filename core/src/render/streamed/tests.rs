@@ -12,7 +12,7 @@ use std::vec::Vec;
 use super::*;
 use crate::number::{Fixed, Fixed16, SoftFloat};
 use crate::pixel::FrameBuffer;
-use crate::render::{render_pga, render_pga_sized, render_rgb};
+use crate::render::{Pga, Rgb, StackSized, Streamed, Whole, render};
 use crate::model::{Optimizations, SceneDescription};
 
 const WIDTH: u16 = 128;
@@ -85,14 +85,14 @@ fn framebuffer_render<N: Number>(scene: &Scene<N, CAPACITY>) -> (Vec<u8>, Statis
     let mut pixels = vec![0u8; PIXELS];
     let mut frame = FrameBuffer::new(&mut pixels, WIDTH, HEIGHT).unwrap();
     let mut statistics = Statistics::default();
-    render_pga(scene, &mut frame, &mut statistics);
+    render(scene, Pga, Whole, &mut frame, &mut statistics);
     (pixels, statistics)
 }
 
 fn streamed_render<N: Number>(scene: &Scene<N, CAPACITY>) -> (Box<Stream<u8>>, Statistics) {
     let mut sink = Box::new(Stream::new(0u8));
     let mut statistics = Statistics::default();
-    render_pga_streamed(scene, &mut *sink, &mut statistics);
+    render(scene, Pga, Streamed, &mut *sink, &mut statistics);
     (sink, statistics)
 }
 
@@ -168,10 +168,10 @@ fn the_sized_variants_agree() {
         let mut pixels = vec![0u8; PIXELS];
         let mut frame = FrameBuffer::new(&mut pixels, WIDTH, HEIGHT).unwrap();
         let mut expected = Statistics::default();
-        render_pga_sized::<f32, _, CAPACITY, _, 4, 129>(&scene, &mut frame, &mut expected);
+        render(&scene, Pga, StackSized::<_, 4, 129>(Whole), &mut frame, &mut expected);
         let mut sink = Box::new(Stream::new(0u8));
         let mut statistics = Statistics::default();
-        render_pga_streamed_sized::<f32, _, CAPACITY, _, 4, 129>(&scene, &mut *sink, &mut statistics);
+        render(&scene, Pga, StackSized::<_, 4, 129>(Streamed), &mut *sink, &mut statistics);
         assert!(sink.pixels.iter().zip(&pixels).all(|(a, b)| a == b), "{name}");
         assert_eq!(statistics, expected, "{name}");
         assert_eq!(sink.broken, 0, "{name}");
@@ -187,10 +187,10 @@ fn rgb_streamed_equals_the_framebuffer_render() {
         let mut pixels = vec![[0u8; 3]; PIXELS];
         let mut frame = FrameBuffer::new(&mut pixels, WIDTH, HEIGHT).unwrap();
         let mut expected = Statistics::default();
-        render_rgb(&scene, &mut frame, &mut expected);
+        render(&scene, Rgb, Whole, &mut frame, &mut expected);
         let mut sink = Box::new(Stream::new([0u8; 3]));
         let mut statistics = Statistics::default();
-        render_rgb_streamed(&scene, &mut *sink, &mut statistics);
+        render(&scene, Rgb, Streamed, &mut *sink, &mut statistics);
         assert!(sink.pixels.iter().zip(&pixels).all(|(a, b)| a == b), "{optimizations:?}");
         assert_eq!(statistics, expected, "{optimizations:?}");
         assert_eq!(sink.broken, 0);

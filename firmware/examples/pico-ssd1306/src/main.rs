@@ -9,7 +9,7 @@
 use defmt_rtt as _;
 use fugit::RateExtU32;
 use microtrace::pixel::{FrameBuffer, LutGrey, OrderedDither, PixelSink, PixelSource, RowDisplaySink};
-use microtrace::render::{render_pga, Statistics};
+use microtrace::render::{Pga, Statistics, Whole};
 use microtrace::model::SceneDescription;
 use microtrace::scene::Scene;
 use panic_probe as _;
@@ -93,7 +93,7 @@ fn main() -> ! {
 /// The render, out of line (one symbol for the tests to find in the ELF).
 #[inline(never)]
 fn render<S: PixelSink<u8> + PixelSource<u8>>(scene: &Scene<f32, MAX_OBJECTS>, sink: &mut S, statistics: &mut Statistics) {
-    render_pga(scene, sink, statistics);
+    microtrace::render::render(scene, Pga, Whole, sink, statistics);
 }
 
 type Oled<DI> = Ssd1306<DI, DisplaySize128x64, ssd1306::mode::BufferedGraphicsMode<DisplaySize128x64>>;

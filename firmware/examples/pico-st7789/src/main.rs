@@ -14,7 +14,7 @@ use embedded_hal::digital::OutputPin;
 use embedded_hal_bus::spi::ExclusiveDevice;
 use fugit::RateExtU32;
 use microtrace::pixel::{FrameBuffer, LutColour, PixelSink, PixelSource, RowDisplaySink};
-use microtrace::render::{render_pga, Statistics};
+use microtrace::render::{Pga, Statistics, Whole};
 use microtrace::model::SceneDescription;
 use microtrace::scene::Scene;
 use mipidsi::interface::SpiInterface;
@@ -118,5 +118,5 @@ fn main() -> ! {
 /// The render, out of line (one symbol for the tests to find in the ELF).
 #[inline(never)]
 fn render<S: PixelSink<u8> + PixelSource<u8>>(scene: &Scene<f32, MAX_OBJECTS>, sink: &mut S, statistics: &mut Statistics) {
-    render_pga(scene, sink, statistics);
+    microtrace::render::render(scene, Pga, Whole, sink, statistics);
 }

@@ -1,0 +1,178 @@
+//! The one door to a render: [`render`]`(&scene, mode, order, sink, counts)`.
+//!
+//! The mode is what a pixel is ([`Pga`]: a palette index, §4.2.4; [`Rgb`]: 8-bit channels); the
+//! order is how the image is walked and what the sink must do:
+//!
+//! | order | pixels | the sink | counts |
+//! |---|---|---|---|
+//! | [`Whole`] | every row, top first (digest §3.4) | [`PixelSink`] + [`PixelSource`]: Pixelbuffer's marks are read back | [`Statistics`] |
+//! | [`Rows`] | the band of rows given, for one of several threads: each pixel as the whole render's; the counts the band's (the caches start empty at its first row) | as `Whole` | [`Statistics`] |
+//! | [`Streamed`] | every row, top first, each pixel written once, then `row_done` | a [`PixelSink`] never read back | [`Statistics`] |
+//! | [`Progressive`] | four passes, coarse to fine (`render/progressive.rs`) | a [`PixelSink`] | [`PassStatistics`] |
+//! | [`Pass`] | one pass of the progressive render | a [`PixelSink`] | [`Statistics`] |
+//!
+//! Every order gives the same final image, and `Whole`, `Streamed` and `Progressive` the same
+//! statistics (summed over the passes). Antialiasing and the ray tree are the scene's: how a
+//! pixel is computed, the same in every order. [`StackSized`] wraps an order for a chip: a ray
+//! tree at most `DEPTH` generations deep (a scene's deeper `depth` is cut there; without it the
+//! format's deepest, 8) and a row of `ROW` antialiasing corners (the image's width plus one
+//! shares every corner; fewer traces some twice).
+
+use core::ops::Range;
+
+use super::antialias::ANTIALIAS_ROW;
+use super::fill::{PGA_FILL, PGA_FLOOD, RGB_FILL, RGB_FLOOD};
+use super::mode::{PgaNodes, RgbNodes};
+use super::progressive::{self, PassStatistics};
+use super::{image, streamed, Statistics};
+use crate::model::{Rgb888, MAX_DEPTH};
+use crate::number::Number;
+use crate::pixel::{PixelSink, PixelSource};
+use crate::scene::{Objects, Scene};
+
+/// What a pixel is: [`Pga`] or [`Rgb`].
+pub trait PixelMode: sealed::Sealed + Copy {
+    /// The pixel's type: a palette index, or 8-bit red, green and blue.
+    type Pixel: Copy + PartialEq;
+}
+
+/// PGA mode: one palette index per pixel (the thesis's 256-colour display).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Pga;
+
+/// RGB mode: 8 bits a channel (see `shading::rgb` for how it differs from the thesis).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Rgb;
+
+impl PixelMode for Pga {
+    type Pixel = u8;
+}
+
+impl PixelMode for Rgb {
+    type Pixel = Rgb888;
+}
+
+/// The whole image into a sink that Pixelbuffer's marks are read back from.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Whole;
+
+/// The image rows in the range only, into a sink that is read back (a band for a thread).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Rows(pub Range<u16>);
+
+/// The whole image into a sink that is never read: each row written once, then `row_done`.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Streamed;
+
+/// The whole image coarse to fine, in [`super::PASSES`] passes.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Progressive;
+
+/// One pass (0..[`super::PASSES`]) of the progressive render, for a caller that does something
+/// between passes: 0, 1, 2, 3 in turn make the whole render. A pass beyond the last does
+/// nothing.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Pass(pub usize);
+
+/// An order with the render's stack sized for the scene (the firmware's): a ray tree at most
+/// `DEPTH` generations deep and a row of `ROW` antialiasing corners.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct StackSized<W, const DEPTH: usize, const ROW: usize>(pub W);
+
+/// How an image is walked, for pixels of mode `M` into a sink `S`: the orders above.
+pub trait Order<M: PixelMode, S>: sealed::Sealed {
+    /// What the render counts: [`Statistics`], or one per pass.
+    type Counts;
+
+    /// Renders `scene` in this order (the stack sized for `DEPTH` and `ROW`); [`render`] calls it.
+    #[doc(hidden)]
+    fn walk<N: Number, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize, const ROW: usize>(self, scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, counts: &mut Self::Counts);
+}
+
+/// Renders `scene` in `mode`, walking the image in `order`, into `sink`, adding what it counts
+/// to `counts` (the statistics of Table 4.2).
+#[inline]
+pub fn render<N, const MAX_OBJECTS: usize, O, M, W, S>(scene: &Scene<N, MAX_OBJECTS, O>, mode: M, order: W, sink: &mut S, counts: &mut W::Counts)
+where
+    N: Number,
+    O: Objects<N>,
+    M: PixelMode,
+    W: Order<M, S>,
+{
+    let _ = mode;
+    order.walk::<N, MAX_OBJECTS, O, { MAX_DEPTH as usize }, ANTIALIAS_ROW>(scene, sink, counts);
+}
+
+impl<M: PixelMode, S, W: Order<M, S>, const SIZED_DEPTH: usize, const SIZED_ROW: usize> Order<M, S> for StackSized<W, SIZED_DEPTH, SIZED_ROW> {
+    type Counts = W::Counts;
+
+    #[inline(always)]
+    fn walk<N: Number, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize, const ROW: usize>(self, scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, counts: &mut Self::Counts) {
+        self.0.walk::<N, MAX_OBJECTS, O, SIZED_DEPTH, SIZED_ROW>(scene, sink, counts);
+    }
+}
+
+/// The orders for one mode: its nodes, its background and Pixelbuffer's two marks.
+macro_rules! orders {
+    ($mode:ty, $pixel:ty, $nodes:ident, $background:ident, $fill:expr, $flood:expr) => {
+        impl<S: PixelSink<$pixel> + PixelSource<$pixel>> Order<$mode, S> for Whole {
+            type Counts = Statistics;
+
+            #[inline(always)]
+            fn walk<N: Number, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize, const ROW: usize>(self, scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, counts: &mut Statistics) {
+                Rows(0..scene.viewport().height()).walk::<N, MAX_OBJECTS, O, DEPTH, ROW>(scene, sink, counts);
+            }
+        }
+
+        impl<S: PixelSink<$pixel> + PixelSource<$pixel>> Order<$mode, S> for Rows {
+            type Counts = Statistics;
+
+            #[inline(always)]
+            fn walk<N: Number, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize, const ROW: usize>(self, scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, counts: &mut Statistics) {
+                image::render_rows::<N, $pixel, S, _, MAX_OBJECTS, O, DEPTH, ROW>(scene, sink, counts, self.0, scene.$background(), ($fill, $flood), &$nodes { scene });
+            }
+        }
+
+        impl<S: PixelSink<$pixel>> Order<$mode, S> for Streamed {
+            type Counts = Statistics;
+
+            #[inline(always)]
+            fn walk<N: Number, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize, const ROW: usize>(self, scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, counts: &mut Statistics) {
+                streamed::streamed::<N, $pixel, S, _, MAX_OBJECTS, O, DEPTH, ROW>(scene, sink, counts, scene.$background(), &$nodes { scene });
+            }
+        }
+
+        impl<S: PixelSink<$pixel>> Order<$mode, S> for Progressive {
+            type Counts = PassStatistics;
+
+            #[inline(always)]
+            fn walk<N: Number, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize, const ROW: usize>(self, scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, counts: &mut PassStatistics) {
+                progressive::progressive::<N, $pixel, S, _, MAX_OBJECTS, O, DEPTH, ROW>(scene, sink, counts, scene.$background(), &$nodes { scene });
+            }
+        }
+
+        impl<S: PixelSink<$pixel>> Order<$mode, S> for Pass {
+            type Counts = Statistics;
+
+            #[inline(always)]
+            fn walk<N: Number, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize, const ROW: usize>(self, scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, counts: &mut Statistics) {
+                progressive::single_pass::<N, $pixel, S, _, MAX_OBJECTS, O, DEPTH, ROW>(scene, sink, counts, self.0, scene.$background(), &$nodes { scene });
+            }
+        }
+    };
+}
+
+orders!(Pga, u8, PgaNodes, background_index, PGA_FILL, PGA_FLOOD);
+orders!(Rgb, Rgb888, RgbNodes, background_rgb, RGB_FILL, RGB_FLOOD);
+
+mod sealed {
+    pub trait Sealed {}
+    impl Sealed for super::Pga {}
+    impl Sealed for super::Rgb {}
+    impl Sealed for super::Whole {}
+    impl Sealed for super::Rows {}
+    impl Sealed for super::Streamed {}
+    impl Sealed for super::Progressive {}
+    impl Sealed for super::Pass {}
+    impl<W, const DEPTH: usize, const ROW: usize> Sealed for super::StackSized<W, DEPTH, ROW> {}
+}
