@@ -136,3 +136,74 @@ fn the_number_types_agree() {
         assert!(same >= 0.99, "{name}: {:.2} % as f64", same * 100.0);
     }
 }
+
+/// The mean absolute error (per channel, over the image) of `image` against `reference`, a
+/// render `factor` times finer in each direction averaged over each pixel's `factor`² samples.
+fn error_against_supersampled(image: &[Rgb888], width: u16, reference: &[Rgb888], factor: usize) -> f64 {
+    let (width, fine_width) = (usize::from(width), usize::from(width) * factor);
+    let mut total = 0.0;
+    for (index, pixel) in image.iter().enumerate() {
+        let (column, row) = (index % width, index / width);
+        for channel in 0..3 {
+            let mut sum = 0.0;
+            for dy in 0..factor {
+                for dx in 0..factor {
+                    sum += f64::from(reference[(row * factor + dy) * fine_width + column * factor + dx][channel]);
+                }
+            }
+            total += (f64::from(pixel[channel]) - sum / (factor * factor) as f64).abs();
+        }
+    }
+    total / (image.len() * 3) as f64
+}
+
+/// The scene at `factor` times the resolution, each pixel's samples spread evenly over that
+/// pixel's area: the window widened by (factor − 1)/2 of a fine sample's spacing on each side
+/// (pixels sit on the window's edges, digest §3.1, so a fine render of the same window would put
+/// its samples off the coarse pixels' centres, by up to 3/8 of a pixel at the edges for 4x).
+fn supersampled(scene: &SceneDescription<CAPACITY>, factor: u16) -> SceneDescription<CAPACITY> {
+    let (width, height) = (scene.viewport.width(), scene.viewport.height());
+    let mut fine = scene.clone();
+    fine.antialias = None;
+    fine.viewport = microtrace::model::Viewport { x1: 0, x2: width * factor - 1, y1: 0, y2: height * factor - 1 };
+    let spread = f64::from(factor - 1) / 2.0 / f64::from(factor);
+    let (spacing_x, spacing_y) = ((scene.window.x2 - scene.window.x1) / f64::from(width - 1), (scene.window.y2 - scene.window.y1) / f64::from(height - 1));
+    fine.window.x1 -= spread * spacing_x;
+    fine.window.x2 += spread * spacing_x;
+    fine.window.y1 -= spread * spacing_y;
+    fine.window.y2 += spread * spacing_y;
+    fine
+}
+
+/// Chapter 5's goal for antialiasing: on snooker in RGB mode at 128x64 with `antialias 0.05 3`,
+/// at most half the plain render's mean absolute error against a 4x4-supersampled reference
+/// (each pixel's area sampled 16 times, box-filtered; docs/antialiasing.md). The balls'
+/// roughness (`rnd`) is PGA mode's only, so RGB mode has none to turn off.
+#[test]
+fn antialiasing_halves_the_error_against_a_supersampled_reference() {
+    let path = format!("{}/../scenes/snooker.mts", env!("CARGO_MANIFEST_DIR"));
+    let mut plain = description(&std::fs::read_to_string(path).unwrap());
+    plain.fit_to_size(128, 64);
+    let mut antialiased = plain.clone();
+    antialiased.antialias = Some(microtrace::model::Antialias { threshold: 0.05, levels: 3 });
+    let (reference, _) = rgb(&supersampled(&plain, 4));
+    let (plain_image, _) = rgb(&plain);
+    let (antialiased_image, statistics) = rgb(&antialiased);
+    let plain_error = error_against_supersampled(&plain_image, 128, &reference, 4);
+    let antialiased_error = error_against_supersampled(&antialiased_image, 128, &reference, 4);
+    let ratio = antialiased_error / plain_error;
+    println!(
+        "plain {plain_error:.3}, antialiased {antialiased_error:.3} ({:.2} rays a pixel): {ratio:.3} of the plain error",
+        statistics.rays_traced as f64 / statistics.pixels as f64
+    );
+    assert!(ratio <= 0.5, "the antialiased error {antialiased_error:.3} is {ratio:.3} of the plain {plain_error:.3}");
+    // The reference must sample each pixel's own area: the same window at 512x256 puts its
+    // samples up to 3/8 of a pixel off, and the error against it is mostly that shift.
+    let mut shifted = plain.clone();
+    shifted.fit_to_size(512, 256);
+    let (shifted_reference, _) = rgb(&shifted);
+    let shifted_plain = error_against_supersampled(&plain_image, 128, &shifted_reference, 4);
+    let shifted_antialiased = error_against_supersampled(&antialiased_image, 128, &shifted_reference, 4);
+    println!("against the shifted reference: plain {shifted_plain:.3}, antialiased {shifted_antialiased:.3}: {:.3}", shifted_antialiased / shifted_plain);
+    assert!(shifted_antialiased > 2.0 * antialiased_error, "the shifted reference's error {shifted_antialiased:.3} against the aligned {antialiased_error:.3}");
+}
