@@ -39,6 +39,28 @@ impl Rgb4 {
     }
 }
 
+/// Two look-up-table entries and how much of the second a dithered area shows
+/// ([`Palette::dithered_pair`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct DitherPair {
+    pub near: u8,
+    pub far: u8,
+    /// The far entry's share, in sixteenths (0..=16).
+    pub share: u8,
+}
+
+impl DitherPair {
+    /// The entry a pixel shows, given its ordered-dither threshold (0..=15): the far one at
+    /// `share` of the thresholds.
+    pub fn at(self, threshold: u8) -> u8 {
+        if self.share > threshold {
+            self.far
+        } else {
+            self.near
+        }
+    }
+}
+
 /// The 256-entry look-up table.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Palette {
@@ -73,6 +95,37 @@ impl Palette {
             }
         }
         best.1
+    }
+
+    /// The two entries a mixed colour is dithered between (PGA mode's pixels that the ray tree or
+    /// antialiasing mixed, scene format): the nearest entry, and the entry whose line from it
+    /// passes nearest the colour, with the colour's place along that line in sixteenths. An
+    /// ordered dither then shows the far entry at that share of the pixels, so an area of one
+    /// mixed colour averages to it instead of banding at the nearest entry.
+    pub fn dithered_pair(&self, colour: [u8; 3]) -> DitherPair {
+        let near = self.nearest(colour);
+        let near_rgb = self.entry(near).to_rgb888().map(i32::from);
+        let offset = [0, 1, 2].map(|c| i32::from(colour[c]) - near_rgb[c]);
+        // Residuals in sixteenths: |16·(colour − near) − share·(far − near)|².
+        let residual = |step: [i32; 3], share: i32| (0..3).map(|c| (16 * offset[c] - share * step[c]).pow(2)).sum::<i32>();
+        let mut best = DitherPair { near, far: near, share: 0 };
+        let mut best_residual = residual([0; 3], 0);
+        for (index, entry) in (0..=255u8).zip(self.entries.iter()) {
+            let far_rgb = entry.to_rgb888().map(i32::from);
+            let step = [0, 1, 2].map(|c| far_rgb[c] - near_rgb[c]);
+            let length = step.iter().map(|d| d * d).sum::<i32>();
+            let along = (0..3).map(|c| offset[c] * step[c]).sum::<i32>();
+            if length == 0 || along <= 0 {
+                continue;
+            }
+            let share = ((16 * along + length / 2) / length).min(16);
+            let candidate = residual(step, share);
+            if candidate < best_residual {
+                best = DitherPair { near, far: index, share: share as u8 };
+                best_residual = candidate;
+            }
+        }
+        best
     }
 
     /// `generatergbup(group, r, g, b)`: shade i = round(i·(r,g,b)/max(r,g,b)), walking from
@@ -129,6 +182,35 @@ mod tests {
         assert_eq!(palette.entry(47), Rgb4::new(15, 15, 15));
         // max complement is 12 (red), so shade 15 - 12 = 3 is the cell itself.
         assert_eq!(palette.entry(32 + 3), Rgb4::new(3, 9, 15));
+    }
+
+    #[test]
+    fn a_dithered_pair_averages_to_the_colour_where_the_nearest_entry_bands() {
+        let palette = Palette::grey();
+        for level in 0..=255u8 {
+            let pair = palette.dithered_pair([level; 3]);
+            let mean = (0..16u8).map(|threshold| f64::from(palette.entry(pair.at(threshold)).to_rgb888()[0])).sum::<f64>() / 16.0;
+            // Grey levels are 17 apart: sixteenths of that step, rounded.
+            assert!((mean - f64::from(level)).abs() <= 17.0 / 32.0 + 1e-9, "level {level}: {pair:?} averages {mean}");
+            assert_eq!(pair.near, palette.nearest([level; 3]));
+        }
+        // A colour on an entry is that entry everywhere.
+        let exact = palette.dithered_pair([102; 3]);
+        assert!((0..16).all(|threshold| exact.at(threshold) == exact.near));
+        // A mix of red and green, with a red and a green group among greys: the dithered area
+        // comes nearer the mix than its nearest entry.
+        let mut two = Palette::grey();
+        two.set_group_up(1, Rgb4::new(15, 0, 0));
+        two.set_group_up(2, Rgb4::new(0, 15, 0));
+        let mix = [128u8, 127, 0];
+        let pair = two.dithered_pair(mix);
+        let distance = |colour: [f64; 3]| (0..3).map(|c| (colour[c] - f64::from(mix[c])).powi(2)).sum::<f64>().sqrt();
+        let mean = (0..16u8).fold([0.0; 3], |sum, threshold| {
+            let rgb = two.entry(pair.at(threshold)).to_rgb888();
+            [0, 1, 2].map(|c| sum[c] + f64::from(rgb[c]) / 16.0)
+        });
+        let nearest = two.entry(pair.near).to_rgb888().map(f64::from);
+        assert!(distance(mean) < distance(nearest) - 10.0, "{pair:?}: mean {mean:?}, nearest {nearest:?}");
     }
 
     #[test]

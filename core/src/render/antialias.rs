@@ -141,7 +141,7 @@ pub(crate) fn render_antialiased<N, P, S, M, const MAX_OBJECTS: usize, O: Object
             let top_right = above(column + 1, statistics, &mut cache);
             let bottom_right = corner(x + step, below, &coverage, statistics, &mut cache);
             let mean = pixel_mean(&sampler, Square { x, y, side: step, corners: [top_left, top_right, bottom_left, bottom_right], level: 0 }, antialias, statistics, &mut cache);
-            sink.set_pixel(column, row, mode.averaged(mean));
+            sink.set_pixel(column, row, mode.averaged(mean, antialias.image.x1 + column, antialias.image.y2 - row));
             if let Some(slot) = top.get_mut(usize::from(column)) {
                 *slot = bottom_left;
             }

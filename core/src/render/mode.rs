@@ -7,26 +7,28 @@ use crate::model::{PreparedMaterial, Rgb888};
 use crate::number::Number;
 use crate::scene::{Objects, Scene};
 use crate::light::Lighting;
-use crate::shading::{pga_index, rgb_intensity, rgb_pixel, rgb_quantized};
+use crate::shading::{dither_threshold, pga_index, rgb_intensity, rgb_pixel, rgb_quantized};
 
 /// A mode's pixels: a surface's own (the thesis's shading) and the ray tree's node colours.
 pub(crate) trait Mode<N>: NodeColours<N> {
     fn surface(&self, material: &PreparedMaterial<N>, lighting: Lighting<N>, pixel: PixelPosition) -> Self::Pixel;
-    /// The pixel of an antialiased mean (8-bit RGB).
-    fn averaged(&self, colour: [u8; 3]) -> Self::Pixel;
+    /// The pixel of an antialiased mean (8-bit RGB) at screen (`screen_x`, `screen_y`).
+    fn averaged(&self, colour: [u8; 3], screen_x: u16, screen_y: u16) -> Self::Pixel;
 }
 
 /// PGA mode: a surface's palette index; a tree's node is its index's LUT colour, and a mixed
-/// pixel the LUT entry nearest the mix (scene format, chapter 5).
+/// pixel the mix dithered between the two LUT entries that come nearest it (scene format,
+/// chapter 5; [`crate::model::Palette::dithered_pair`]).
 pub(crate) struct PgaNodes<'a, N, const MAX_OBJECTS: usize, O> {
     pub scene: &'a Scene<N, MAX_OBJECTS, O>,
 }
 
 impl<N: Number, const MAX_OBJECTS: usize, O: Objects<N>> NodeColours<N> for PgaNodes<'_, N, MAX_OBJECTS, O> {
     type Pixel = u8;
-    fn finish(&self, colour: [N; 3], _pixel: PixelPosition) -> u8 {
+    fn finish(&self, colour: [N; 3], pixel: PixelPosition) -> u8 {
         let half = self.scene.constants.half;
-        self.scene.palette.nearest(colour.map(|c| (c + half).floor_to_i32().clamp(0, 255) as u8))
+        let pair = self.scene.palette.dithered_pair(colour.map(|c| (c + half).floor_to_i32().clamp(0, 255) as u8));
+        pair.at(dither_threshold(pixel.screen_x, pixel.screen_y))
     }
     fn local(&self, material: &PreparedMaterial<N>, lighting: Lighting<N>, pixel: PixelPosition) -> [N; 3] {
         lut_colour(self.scene, self.surface(material, lighting, pixel))
@@ -45,8 +47,8 @@ impl<N: Number, const MAX_OBJECTS: usize, O: Objects<N>> Mode<N> for PgaNodes<'_
     fn surface(&self, material: &PreparedMaterial<N>, lighting: Lighting<N>, pixel: PixelPosition) -> u8 {
         pga_index(material, lighting, &self.scene.constants, self.scene.dither, pixel)
     }
-    fn averaged(&self, colour: [u8; 3]) -> u8 {
-        self.scene.palette.nearest(colour)
+    fn averaged(&self, colour: [u8; 3], screen_x: u16, screen_y: u16) -> u8 {
+        self.scene.palette.dithered_pair(colour).at(dither_threshold(screen_x, screen_y))
     }
 }
 
@@ -72,7 +74,7 @@ impl<N: Number, const MAX_OBJECTS: usize, O: Objects<N>> Mode<N> for RgbNodes<'_
     fn surface(&self, material: &PreparedMaterial<N>, lighting: Lighting<N>, pixel: PixelPosition) -> Rgb888 {
         rgb_pixel(material, lighting, &self.scene.constants, self.scene.dither, pixel)
     }
-    fn averaged(&self, colour: [u8; 3]) -> Rgb888 {
+    fn averaged(&self, colour: [u8; 3], _screen_x: u16, _screen_y: u16) -> Rgb888 {
         colour
     }
 }
