@@ -306,6 +306,15 @@ fn check_primitives<const N: usize>(description: &SceneDescription<N>, scene_pat
             }
         }
     }
+    // Antialiasing likewise (chapter 5).
+    if description.antialias.is_some() && env("CARGO_FEATURE_ANTIALIAS").is_none() {
+        fail(&format!(
+            "{}:line {}: the scene antialiases but the firmware was built without the `antialias` feature; \
+             enable it (`cargo xtask firmware` picks the features from the scene)",
+            scene_path.display(),
+            description.lines.antialias
+        ));
+    }
     // The ray tree likewise (chapter 5): a scene whose objects reflect or transmit needs it.
     if let Some(object) = description.objects.iter().find(|object| object.material.spawns_rays()) {
         if env("CARGO_FEATURE_RAY_TREE").is_none() {

@@ -215,12 +215,20 @@ fn links_the_ray_tree(elf: &std::path::Path) -> bool {
     names.iter().any(|name| name.contains("microtrace::render::ray_tree::trace_tree"))
 }
 
-/// Only what the scene needs: a build for a scene without reflective or transparent objects (the
-/// thesis's snooker) links none of the ray tree.
+/// Whether the firmware links antialiasing's code (`render::antialias`).
+fn links_antialiasing(elf: &std::path::Path) -> bool {
+    let names = xtask::elf::symbol_names(&std::fs::read(elf).unwrap()).unwrap();
+    names.iter().any(|name| name.contains("microtrace::render::antialias::"))
+}
+
+/// Only what the scene needs: a build for a scene without reflective or transparent objects and
+/// without antialiasing (the thesis's snooker) links none of the ray tree and none of the
+/// antialiasing.
 #[test]
 fn a_scene_without_mirrors_links_no_ray_tree() {
     let run = run_firmware("snooker.mts", Board::Mps2An386);
     assert!(!links_the_ray_tree(&run.elf), "snooker links the ray tree");
+    assert!(!links_antialiasing(&run.elf), "snooker links antialiasing");
     let names = xtask::elf::symbol_names(&std::fs::read(&run.elf).unwrap()).unwrap();
     assert!(!names.iter().any(|name| name.contains("nearest_secondary_hit") || name.contains("space_grid")), "snooker links secondary rays' code");
 }
@@ -237,6 +245,7 @@ fn antialiasing_on_mps2_an386_matches_the_host() {
     assert_eq!(run.numbers["rays_traced"], statistics.rays_traced);
     assert!(statistics.rays_traced > 2 * statistics.pixels, "{} rays for {} pixels", statistics.rays_traced, statistics.pixels);
     linked_code_is_clean(name, Board::Mps2An386, &run.numbers);
+    assert!(links_antialiasing(&run.elf), "{name}: antialiasing is not linked");
 }
 
 #[test]

@@ -301,8 +301,8 @@ fn check_options(options: &FirmwareOptions) -> Result<(), String> {
     Ok(())
 }
 
-/// The `cube`/`sphere`/`cylinder`/`cone` features the scene needs, and `ray-tree` when its
-/// objects reflect or transmit (the firmware models only those), parsing it with the same parser as the firmware's build script.
+/// The `cube`/`sphere`/`cylinder`/`cone` features the scene needs, `ray-tree` when its
+/// objects reflect or transmit and `antialias` when it antialiases (the firmware models only those), parsing it with the same parser as the firmware's build script.
 fn primitive_features(scene: &Path) -> Result<Vec<&'static str>, String> {
     let description = parse_scene(scene)?;
     let mut features: Vec<&'static str> = Primitive::ALL
@@ -313,6 +313,10 @@ fn primitive_features(scene: &Path) -> Result<Vec<&'static str>, String> {
     // The ray tree, when an object reflects or transmits (chapter 5).
     if description.objects.iter().any(|object| object.material.spawns_rays()) {
         features.push("ray-tree");
+    }
+    // Antialiasing, when the scene asks for it (chapter 5).
+    if description.antialias.is_some() {
+        features.push("antialias");
     }
     Ok(features)
 }

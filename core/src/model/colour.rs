@@ -104,21 +104,27 @@ impl Palette {
     /// mixed colour averages to it instead of banding at the nearest entry.
     pub fn dithered_pair(&self, colour: [u8; 3]) -> DitherPair {
         let near = self.nearest(colour);
-        let near_rgb = self.entry(near).to_rgb888().map(i32::from);
-        let offset = [0, 1, 2].map(|c| i32::from(colour[c]) - near_rgb[c]);
+        let [nr, ng, nb] = self.entry(near).to_rgb888().map(i32::from);
+        let [cr, cg, cb] = colour.map(i32::from);
+        let offset = (cr - nr, cg - ng, cb - nb);
         // Residuals in sixteenths: |16·(colour − near) − share·(far − near)|².
-        let residual = |step: [i32; 3], share: i32| (0..3).map(|c| (16 * offset[c] - share * step[c]).pow(2)).sum::<i32>();
+        let residual = |(dr, dg, db): (i32, i32, i32), share: i32| {
+            let (er, eg, eb) = (16 * offset.0 - share * dr, 16 * offset.1 - share * dg, 16 * offset.2 - share * db);
+            er * er + eg * eg + eb * eb
+        };
         let mut best = DitherPair { near, far: near, share: 0 };
-        let mut best_residual = residual([0; 3], 0);
+        let mut best_residual = residual((0, 0, 0), 0);
         for (index, entry) in (0..=255u8).zip(self.entries.iter()) {
-            let far_rgb = entry.to_rgb888().map(i32::from);
-            let step = [0, 1, 2].map(|c| far_rgb[c] - near_rgb[c]);
-            let length = step.iter().map(|d| d * d).sum::<i32>();
-            let along = (0..3).map(|c| offset[c] * step[c]).sum::<i32>();
-            if length == 0 || along <= 0 {
+            let [fr, fg, fb] = entry.to_rgb888().map(i32::from);
+            let step = (fr - nr, fg - ng, fb - nb);
+            let length = step.0 * step.0 + step.1 * step.1 + step.2 * step.2;
+            let along = offset.0 * step.0 + offset.1 * step.1 + offset.2 * step.2;
+            if along <= 0 {
                 continue;
             }
-            let share = ((16 * along + length / 2) / length).min(16);
+            // `along > 0` needs a step, so `length > 0`; checked all the same (no panic path).
+            let Some(share) = (16 * along + length / 2).checked_div(length) else { continue };
+            let share = share.min(16);
             let candidate = residual(step, share);
             if candidate < best_residual {
                 best = DitherPair { near, far: index, share: share as u8 };

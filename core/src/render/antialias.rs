@@ -31,11 +31,6 @@ use crate::scene::{Objects, PreparedAntialias, Scene};
 
 type Rgb = [u8; 3];
 
-/// How many corners an antialiased render keeps of a row ([`super::render`] with the default stack): an
-/// image up to 2,048 pixels wide shares every corner (6 KB of stack); a wider one traces the
-/// corners beyond again.
-pub const ANTIALIAS_ROW: usize = 2049;
-
 /// One square of a pixel's subdivision: its top left sample, its side (in samples), its corners
 /// (top left, top right, bottom left, bottom right) and its level.
 #[derive(Clone, Copy)]

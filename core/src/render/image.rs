@@ -2,6 +2,7 @@
 
 use core::ops::Range;
 
+#[cfg(feature = "antialias")]
 use super::antialias::render_antialiased;
 use super::fill::fill_volumes_rows;
 use super::mode::Mode;
@@ -33,6 +34,7 @@ pub(super) fn render_rows<N, P, S, M, const MAX_OBJECTS: usize, O: Objects<N>, c
     S: PixelSink<P> + PixelSource<P>,
     M: Mode<N, Pixel = P>,
 {
+    #[cfg(feature = "antialias")]
     if let Some(antialias) = scene.antialias {
         return with_shadow_culling(scene, |culling| {
             render_antialiased::<N, P, S, M, MAX_OBJECTS, O, DEPTH, ROW>(scene, antialias, sink, statistics, rows, mode, culling)

@@ -1,6 +1,7 @@
 //! The per-pixel driver (RTRACE.C `raycast`, PGADPEND.C `pgatrace`, `rgbtrace`) and the
 //! statistics of Table 4.2.
 
+#[cfg(feature = "antialias")]
 mod antialias;
 mod direct_lighting;
 mod fill;
@@ -21,12 +22,11 @@ mod streamed;
 mod surface;
 
 pub use primary::{nearest_hit, nearest_hit_cached, NearestHit};
-pub use order::{render, Order, Pass, Pga, PixelMode, Progressive, Rgb, Rows, StackSized, Streamed, Whole};
+pub use order::{render, Order, ANTIALIAS_ROW, Pass, Pga, PixelMode, Progressive, Rgb, Rows, StackSized, Streamed, Whole};
 pub use progressive::{traced_in_pass, PassStatistics, PASSES, PASS_SIZES};
 pub use shadow_ray::{in_shadow, in_shadow_cached, in_shadow_culled, shadow_origin, ShadowCache, ShadowCulling};
 pub use statistics::Statistics;
 pub use fill::{fill_volumes, fill_volumes_rows};
-pub use antialias::ANTIALIAS_ROW;
 pub use pixel_value::{shade_pixel, ShadedPixel};
 
 #[cfg(test)]

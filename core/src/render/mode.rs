@@ -13,6 +13,7 @@ use crate::shading::{dither_threshold, pga_index, rgb_intensity, rgb_pixel, rgb_
 pub(crate) trait Mode<N>: NodeColours<N> {
     fn surface(&self, material: &PreparedMaterial<N>, lighting: Lighting<N>, pixel: PixelPosition) -> Self::Pixel;
     /// The pixel of an antialiased mean (8-bit RGB) at screen (`screen_x`, `screen_y`).
+    #[cfg(feature = "antialias")]
     fn averaged(&self, colour: [u8; 3], screen_x: u16, screen_y: u16) -> Self::Pixel;
 }
 
@@ -47,6 +48,7 @@ impl<N: Number, const MAX_OBJECTS: usize, O: Objects<N>> Mode<N> for PgaNodes<'_
     fn surface(&self, material: &PreparedMaterial<N>, lighting: Lighting<N>, pixel: PixelPosition) -> u8 {
         pga_index(material, lighting, &self.scene.constants, self.scene.dither, pixel)
     }
+    #[cfg(feature = "antialias")]
     fn averaged(&self, colour: [u8; 3], screen_x: u16, screen_y: u16) -> u8 {
         self.scene.palette.dithered_pair(colour).at(dither_threshold(screen_x, screen_y))
     }
@@ -74,6 +76,7 @@ impl<N: Number, const MAX_OBJECTS: usize, O: Objects<N>> Mode<N> for RgbNodes<'_
     fn surface(&self, material: &PreparedMaterial<N>, lighting: Lighting<N>, pixel: PixelPosition) -> Rgb888 {
         rgb_pixel(material, lighting, &self.scene.constants, self.scene.dither, pixel)
     }
+    #[cfg(feature = "antialias")]
     fn averaged(&self, colour: [u8; 3], _screen_x: u16, _screen_y: u16) -> Rgb888 {
         colour
     }

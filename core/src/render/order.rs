@@ -20,7 +20,6 @@
 
 use core::ops::Range;
 
-use super::antialias::ANTIALIAS_ROW;
 use super::fill::{PGA_FILL, PGA_FLOOD, RGB_FILL, RGB_FLOOD};
 use super::mode::{PgaNodes, RgbNodes};
 use super::progressive::{self, PassStatistics};
@@ -29,6 +28,11 @@ use crate::model::{Rgb888, MAX_DEPTH};
 use crate::number::Number;
 use crate::pixel::{PixelSink, PixelSource};
 use crate::scene::{Objects, Scene};
+
+/// How many corners an antialiased render keeps of a row ([`render`] with the default stack): an
+/// image up to 2,048 pixels wide shares every corner (6 KB of stack); a wider one traces the
+/// corners beyond again.
+pub const ANTIALIAS_ROW: usize = 2049;
 
 /// What a pixel is: [`Pga`] or [`Rgb`].
 pub trait PixelMode: sealed::Sealed + Copy {

@@ -23,6 +23,7 @@
 //! row is reported once per pass (four times in all); a display flushes there.
 
 use super::shadow_ray::ShadowCache;
+#[cfg(feature = "antialias")]
 use super::antialias::render_antialiased;
 use super::mode::Mode;
 use super::pixel_value::pixel_value;
@@ -124,6 +125,7 @@ fn trace_pass<N, P, S, M, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: 
 {
     let Some(&size) = PASS_SIZES.get(pass) else { return };
     // An antialiased image has no coarse passes: its last pass renders it whole.
+    #[cfg(feature = "antialias")]
     if let Some(antialias) = scene.antialias {
         if size == 1 {
             render_antialiased::<N, P, S, M, MAX_OBJECTS, O, DEPTH, ROW>(scene, antialias, sink, statistics, 0..antialias.image.height(), mode, culling);

@@ -25,6 +25,7 @@
 //! fewer, since no flood is marked and read back). With the thesis's tuning (`Tuning::THESIS`,
 //! the `f64` silhouettes) each object's volume is projected once a row instead of once a frame.
 
+#[cfg(feature = "antialias")]
 use super::antialias::render_antialiased;
 use super::fill::RowCoverage;
 use super::shadow_ray::ShadowCache;
@@ -51,6 +52,7 @@ pub(super) fn streamed<N, P, S, M, const MAX_OBJECTS: usize, O: Objects<N>, cons
 {
     let camera = &scene.camera;
     let (width, height) = (camera.width(), camera.height());
+    #[cfg(feature = "antialias")]
     if let Some(antialias) = scene.antialias {
         return with_shadow_culling(scene, |culling| {
             render_antialiased::<N, P, S, M, MAX_OBJECTS, O, DEPTH, ROW>(scene, antialias, sink, statistics, 0..height, mode, culling)

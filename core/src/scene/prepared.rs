@@ -203,6 +203,10 @@ impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
         description: &SceneDescription<CAPACITY>,
         descriptions: &[ObjectDescription],
     ) -> Result<(), SceneError> {
+        #[cfg(not(feature = "antialias"))]
+        if description.antialias.is_some() {
+            return Err(SceneError { line: description.lines.antialias, kind: SceneErrorKind::FeatureNotCompiled { feature: "antialias", statement: "antialias" } });
+        }
         let (camera, light) = Self::camera_and_light(description, description.antialias)?;
         self.camera = camera;
         self.light = light;
