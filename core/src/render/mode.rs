@@ -18,8 +18,8 @@ pub(crate) trait Mode<N>: NodeColours<N> {
 }
 
 /// PGA mode: a surface's palette index; a tree's node is its index's LUT colour, and a mixed
-/// pixel the mix dithered between the two LUT entries that come nearest it (scene format,
-/// chapter 5; [`crate::model::Palette::dithered_pair`]).
+/// pixel the LUT entry nearest the mix moved by the pixel's ordered dither (scene format,
+/// chapter 5; [`crate::model::Palette::dithered`]).
 pub(crate) struct PgaNodes<'a, N, const MAX_OBJECTS: usize, O> {
     pub scene: &'a Scene<N, MAX_OBJECTS, O>,
 }
@@ -28,8 +28,8 @@ impl<N: Number, const MAX_OBJECTS: usize, O: Objects<N>> NodeColours<N> for PgaN
     type Pixel = u8;
     fn finish(&self, colour: [N; 3], pixel: PixelPosition) -> u8 {
         let half = self.scene.constants.half;
-        let pair = self.scene.palette.dithered_pair(colour.map(|c| (c + half).floor_to_i32().clamp(0, 255) as u8));
-        pair.at(dither_threshold(pixel.screen_x, pixel.screen_y))
+        let mixed = colour.map(|c| (c + half).floor_to_i32().clamp(0, 255) as u8);
+        self.scene.palette.dithered(mixed, dither_threshold(pixel.screen_x, pixel.screen_y))
     }
     fn local(&self, material: &PreparedMaterial<N>, lighting: Lighting<N>, pixel: PixelPosition) -> [N; 3] {
         lut_colour(self.scene, self.surface(material, lighting, pixel))
@@ -50,7 +50,7 @@ impl<N: Number, const MAX_OBJECTS: usize, O: Objects<N>> Mode<N> for PgaNodes<'_
     }
     #[cfg(feature = "antialias")]
     fn averaged(&self, colour: [u8; 3], screen_x: u16, screen_y: u16) -> u8 {
-        self.scene.palette.dithered_pair(colour).at(dither_threshold(screen_x, screen_y))
+        self.scene.palette.dithered(colour, dither_threshold(screen_x, screen_y))
     }
 }
 
