@@ -486,9 +486,13 @@ fn the_reader_finds_imports_through_reexports() {
     let krate = core_crate();
     let imports = krate.imports();
     let file = |path: &str| krate.files.iter().position(|file| file.path == path).unwrap_or_else(|| panic!("no core/src/{path}"));
-    let image = file("render/image.rs");
-    for expected in ["render/antialias.rs", "render/statistics.rs", "scene/prepared.rs", "model/colour.rs", "pixel/mod.rs"] {
-        assert!(imports[image].contains(&file(expected)), "render/image.rs should import {expected}");
+    for (from, expected) in [
+        ("render/image.rs", ["render/antialias.rs", "render/statistics.rs", "scene/prepared.rs", "pixel/mod.rs"]),
+        ("render/order.rs", ["render/image.rs", "render/statistics.rs", "model/colour.rs", "model/description.rs"]),
+    ] {
+        for expected in expected {
+            assert!(imports[file(from)].contains(&file(expected)), "{from} should import {expected}");
+        }
     }
     let total: usize = imports.iter().map(BTreeSet::len).sum();
     assert!(total > 150, "only {total} imports found in the core");
