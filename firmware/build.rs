@@ -47,7 +47,7 @@ fn main() {
         .map(PathBuf::from)
         .unwrap_or_else(|| manifest_dir.join("../scenes/snooker.mts"));
     println!("cargo:rerun-if-changed={}", scene_path.display());
-    for name in ["MICROTRACE_SCENE", "MICROTRACE_NUMBER", "MICROTRACE_SIZE", "MICROTRACE_OPT", "MICROTRACE_FAULT_TEST", "MICROTRACE_STACK_RESERVE"] {
+    for name in ["MICROTRACE_SCENE", "MICROTRACE_NUMBER", "MICROTRACE_SIZE", "MICROTRACE_OPT", "MICROTRACE_FAULT_TEST", "MICROTRACE_STACK_RESERVE", "MICROTRACE_GRID_ENTRIES_PER_OBJECT"] {
         println!("cargo:rerun-if-env-changed={name}");
     }
     println!("cargo:rustc-check-cfg=cfg(microtrace_fault_test)");
@@ -362,6 +362,19 @@ fn generate<const N: usize>(
     // Antialiasing keeps one row of the pixels' corners: the image's width plus one.
     let corner_row = if d.antialias.is_some() { usize::from(d.viewport.width()) + 1 } else { 1 };
     writeln!(out, "pub const ANTIALIAS_ROW: usize = {corner_row};").unwrap();
+    // The grid's pool: the entries per object the scene's grid holds at the build's view
+    // (xtask counts them, `MICROTRACE_GRID_ENTRIES_PER_OBJECT`), else the core's default.
+    let grid_entries = grid_entries_per_object();
+    writeln!(out, "pub const GRID_ENTRIES_PER_OBJECT: usize = {grid_entries};").unwrap();
     out
+}
+
+/// `MICROTRACE_GRID_ENTRIES_PER_OBJECT` (set by xtask from the scene's grid), or the core's
+/// default when it is unset; a value that is not a count stops the build, naming it.
+fn grid_entries_per_object() -> usize {
+    match env("MICROTRACE_GRID_ENTRIES_PER_OBJECT").filter(|text| !text.is_empty()) {
+        None => microtrace::config::DEFAULT_GRID_ENTRIES_PER_OBJECT,
+        Some(text) => text.parse().unwrap_or_else(|_| fail(&format!("MICROTRACE_GRID_ENTRIES_PER_OBJECT: expected a number of entries (e.g. 9), not {text:?}"))),
+    }
 }
 

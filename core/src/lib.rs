@@ -23,6 +23,7 @@
 #![warn(missing_debug_implementations)]
 
 pub mod camera;
+pub mod config;
 pub mod formats;
 pub mod geometry;
 pub mod light;

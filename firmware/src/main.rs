@@ -33,10 +33,11 @@ use microtrace::render::{PassStatistics, Progressive};
 use microtrace::render::Whole;
 #[cfg(not(any(feature = "framebuffer", feature = "progressive")))]
 use microtrace::render::Streamed;
-use microtrace::render::{Pga, StackSized};
+use microtrace::config::Arrays;
+use microtrace::render::Pga;
 #[cfg(not(feature = "progressive"))]
 use microtrace::render::Statistics;
-use microtrace::scene::Scene;
+use microtrace::scene::Prepared;
 
 use decimal::Decimal;
 #[cfg(any(feature = "framebuffer", feature = "progressive"))]
@@ -45,8 +46,9 @@ use display::FramebufferAndDisplay;
 use display::StreamedRows;
 use semihosting::{print, HostFile};
 
-/// Sized by the scene: exactly its objects, which stay in flash.
-type PreparedScene = Scene<scene::Number, { scene::OBJECT_COUNT }, FlashObjects>;
+/// Sized by the scene: exactly its objects, which stay in flash; its grid's entries, its ray
+/// tree's depth and its row of antialiasing corners.
+type PreparedScene = Prepared<Arrays<scene::Number, { scene::OBJECT_COUNT }, FlashObjects, { scene::GRID_ENTRIES_PER_OBJECT }, { scene::TREE_DEPTH }, { scene::ANTIALIAS_ROW }>>;
 
 /// The scene's objects in flash, where the build put them prepared ahead (`OBJECTS_AHEAD`):
 /// they take no RAM (only each object's eye, which depends on the view, is in the scene).
@@ -135,9 +137,9 @@ fn write_report(scene: &PreparedScene, statistics: &Passes, stack_peak_bytes: u3
     report.integer("height", scene::HEIGHT as u64);
     report.integer("objects", scene::OBJECT_COUNT as u64);
     // What the grid holds and what its pool could (sized by the build: xtask's
-    // MICROTRACE_GRID_ENTRIES_PER_OBJECT).
+    // MICROTRACE_GRID_ENTRIES_PER_OBJECT, into the scene's `Arrays`).
     report.integer("grid_entries", scene.acceleration.grid_entries() as u64);
-    report.integer("grid_capacity", microtrace::optimize::Acceleration::<scene::Number, { scene::OBJECT_COUNT }>::grid_capacity() as u64);
+    report.integer("grid_capacity", scene.acceleration.grid_capacity() as u64);
     report_statistics(&mut report, statistics);
     report.integer("stack_peak_bytes", stack_peak_bytes as u64);
     report.integer("stack_size_bytes", stack_size_bytes as u64);
@@ -174,7 +176,7 @@ type Passes = PassStatistics;
 #[inline(never)]
 #[cfg(not(any(feature = "framebuffer", feature = "progressive")))]
 fn render<S: PixelSink<u8>>(scene: &PreparedScene, sink: &mut S, statistics: &mut Passes) {
-    microtrace::render::render(scene, Pga, StackSized::<_, { scene::TREE_DEPTH }, { scene::ANTIALIAS_ROW }>(Streamed), sink, statistics);
+    microtrace::render::render(scene, Pga, Streamed, sink, statistics);
 }
 
 /// The framebuffer render (the `framebuffer` feature): Pixelbuffer's fill marked in the
@@ -182,7 +184,7 @@ fn render<S: PixelSink<u8>>(scene: &PreparedScene, sink: &mut S, statistics: &mu
 #[inline(never)]
 #[cfg(all(feature = "framebuffer", not(feature = "progressive")))]
 fn render<S: PixelSink<u8> + PixelSource<u8>>(scene: &PreparedScene, sink: &mut S, statistics: &mut Passes) {
-    microtrace::render::render(scene, Pga, StackSized::<_, { scene::TREE_DEPTH }, { scene::ANTIALIAS_ROW }>(Whole), sink, statistics);
+    microtrace::render::render(scene, Pga, Whole, sink, statistics);
 }
 
 /// The progressive render (the `progressive` feature): coarse to fine, each pass straight into
@@ -190,7 +192,7 @@ fn render<S: PixelSink<u8> + PixelSource<u8>>(scene: &PreparedScene, sink: &mut 
 #[inline(never)]
 #[cfg(feature = "progressive")]
 fn render<S: PixelSink<u8> + PixelSource<u8>>(scene: &PreparedScene, sink: &mut S, statistics: &mut Passes) {
-    microtrace::render::render(scene, Pga, StackSized::<_, { scene::TREE_DEPTH }, { scene::ANTIALIAS_ROW }>(Progressive), sink, statistics);
+    microtrace::render::render(scene, Pga, Progressive, sink, statistics);
 }
 
 #[cfg(not(feature = "progressive"))]

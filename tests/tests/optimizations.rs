@@ -4,6 +4,7 @@
 //! direction, eyes inside objects, both light types, shadows on and off), in f64 and f32, in
 //! PGA and RGB mode. The generator is a fixed-seed xorshift, so a failure names its seed.
 
+use microtrace::config::Arrays;
 use microtrace::geometry::Matrix4;
 use microtrace::number::{Fixed, Number};
 use microtrace::optimize::bounding_volume::ObjectGeometry;
@@ -371,12 +372,12 @@ fn thesis_scenes_at_full_size_all_on_matches_none() {
 
 #[test]
 fn acceleration_memory_is_bounded() {
-    let per_scene_54 = core::mem::size_of::<Acceleration<f64, 54>>();
-    let per_scene_21 = core::mem::size_of::<Acceleration<f64, 21>>();
+    let per_scene_54 = core::mem::size_of::<Acceleration<Arrays<f64, 54>>>();
+    let per_scene_21 = core::mem::size_of::<Acceleration<Arrays<f64, 21>>>();
     let per_object = (per_scene_54 - per_scene_21) as f64 / 33.0;
     let fixed = per_scene_21 as f64 - 21.0 * per_object;
-    let f32_54 = core::mem::size_of::<Acceleration<f32, 54>>();
-    println!("Acceleration<f64, N>: {per_object} bytes per object + {fixed} bytes per scene; f64 x 54 = {per_scene_54}, f32 x 54 = {f32_54}");
+    let f32_54 = core::mem::size_of::<Acceleration<Arrays<f32, 54>>>();
+    println!("Acceleration<Arrays<f64, N>>: {per_object} bytes per object + {fixed} bytes per scene; f64 x 54 = {per_scene_54}, f32 x 54 = {f32_54}");
     assert!(per_object <= 450.0, "{per_object} bytes per object");
     assert!(fixed <= 1024.0, "{fixed} bytes per scene");
 }

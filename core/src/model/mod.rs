@@ -16,6 +16,7 @@ mod description;
 mod error;
 mod light;
 mod material;
+mod object;
 mod optimizations;
 mod primitive;
 mod view;
@@ -25,6 +26,7 @@ pub use description::{Antialias, ObjectDescription, SceneDescription, SettingLin
 pub use error::{SceneError, SceneErrorKind, Token, TOKEN_EXCERPT_BYTES};
 pub use light::{Light, LightSource, MAX_LIGHTS};
 pub use material::{Material, PreparedMaterial};
+pub use object::{Object, Objects};
 pub use optimizations::Optimizations;
 pub use primitive::Primitive;
 pub use view::{Projection, Viewport, Window};

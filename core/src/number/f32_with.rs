@@ -21,7 +21,7 @@ use super::Number;
 /// root does; so does micromath's bit trick), since `F32With` is floating point
 /// ([`Number::FLOATING_POINT`]) and the tracer may rescale by powers of two before a square
 /// root.
-pub trait SquareRoot {
+pub trait SquareRoot: 'static {
     /// The number type's name in reports and on the command line ([`Number::NAME`]).
     const NAME: &'static str;
     /// The relative error of [`SquareRoot::sqrt`] is below 2^this

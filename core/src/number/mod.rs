@@ -40,6 +40,7 @@ use core::ops::{Add, Mul, Neg, Sub};
 /// A real-number type for the tracer's per-pixel arithmetic.
 pub trait Number:
     Copy
+    + 'static
     + PartialOrd
     + PartialEq
     + Debug

@@ -4,6 +4,8 @@
 
 use crate::camera::{Camera, PixelPosition};
 use crate::geometry::{AffineTransform, Vector3};
+use crate::config::{Arrays, Config, Table};
+use crate::model::Objects;
 use crate::number::Number;
 use crate::model::{ObjectDescription, Optimizations, Primitive};
 
@@ -40,25 +42,64 @@ impl Tuning {
 /// What the optimizations derive per object from the bounding volumes at preprocess time.
 /// Per object: its place in the test order (`u16`), its extent (4 `u16`), a depth bound (`N`)
 /// and a shadow bounding capsule (8 `N`); per scene: the grid.
-#[derive(Debug, Clone)]
-pub struct Acceleration<N, const MAX_OBJECTS: usize> {
+pub struct Acceleration<C: Config> {
     count: usize,
     optimizations: Optimizations,
     tuning: Tuning,
     screen: Screen,
     /// Test order: sorted by depth bound with Sortlist, object order otherwise.
-    order: [u16; MAX_OBJECTS],
-    extents: [Extent; MAX_OBJECTS],
+    order: C::PerObject<u16>,
+    extents: C::PerObject<Extent>,
     /// Lower bound of the `t` of any hit on each object (`−N::MAX`: none known).
-    near: [N; MAX_OBJECTS],
+    near: C::PerObject<C::Number>,
     /// Each object's silhouette as a stadium (our tuning), for the grid and the fill.
-    stadiums: [Option<capsule::Stadium>; MAX_OBJECTS],
+    stadiums: C::PerObject<Option<capsule::Stadium>>,
     #[cfg(feature = "acceleration-tables")]
-    shadow: [ShadowBound<N>; MAX_OBJECTS],
-    grid: Grid<N, MAX_OBJECTS>,
+    shadow: C::PerObject<ShadowBound<C::Number>>,
+    grid: Grid<C>,
 }
 
-impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
+impl<C: Config> core::fmt::Debug for Acceleration<C> {
+    fn fmt(&self, formatter: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        formatter.debug_struct("Acceleration").field("count", &self.count).field("optimizations", &self.optimizations).field("tuning", &self.tuning).field("grid", &self.grid).finish_non_exhaustive()
+    }
+}
+
+impl<C: Config> Clone for Acceleration<C> {
+    fn clone(&self) -> Self {
+        Self {
+            count: self.count,
+            optimizations: self.optimizations,
+            tuning: self.tuning,
+            screen: self.screen,
+            order: self.order.clone(),
+            extents: self.extents.clone(),
+            near: self.near.clone(),
+            stadiums: self.stadiums.clone(),
+            #[cfg(feature = "acceleration-tables")]
+            shadow: self.shadow.clone(),
+            grid: self.grid.clone(),
+        }
+    }
+}
+
+impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize> Acceleration<Arrays<N, K, O, POOL, DEPTH, ROW>> {
+    /// Every byte zero, nothing built: the value before [`Acceleration::rebuild`] (a `static`
+    /// holding it costs zero-initialised RAM and no flash).
+    pub const UNSET: Self = Self {
+        count: 0,
+        optimizations: Optimizations::NONE,
+        tuning: Tuning::THESIS,
+        screen: Screen::UNSET,
+        order: [0; K],
+        extents: [Extent { first_column: 0, last_column: 0, first_row: 0, last_row: 0, diagonal: [0; 4] }; K],
+        near: [N::ZEROED; K],
+        stadiums: [None; K],
+        #[cfg(feature = "acceleration-tables")]
+        shadow: [ShadowBound::UNSET; K],
+        grid: Grid::UNSET,
+    };
+
     /// The thesis's `preprocess` for the optimizations (digest §8.2).
     pub fn build(camera: &Camera<N>, optimizations: Optimizations, objects: &[ObjectDescription]) -> Self {
         Self::build_with(camera, optimizations, objects, Tuning::IMPROVED)
@@ -69,27 +110,13 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
         acceleration.rebuild(camera, optimizations, objects, tuning);
         acceleration
     }
+}
 
-    /// Every byte zero, nothing built: the value before [`Acceleration::rebuild`] (a `static`
-    /// holding it costs zero-initialised RAM and no flash).
-    pub const UNSET: Self = Self {
-        count: 0,
-        optimizations: Optimizations::NONE,
-        tuning: Tuning::THESIS,
-        screen: Screen::UNSET,
-        order: [0; MAX_OBJECTS],
-        extents: [Extent { first_column: 0, last_column: 0, first_row: 0, last_row: 0, diagonal: [0; 4] }; MAX_OBJECTS],
-        near: [N::ZEROED; MAX_OBJECTS],
-        stadiums: [None; MAX_OBJECTS],
-        #[cfg(feature = "acceleration-tables")]
-        shadow: [ShadowBound::UNSET; MAX_OBJECTS],
-        grid: Grid::UNSET,
-    };
-
+impl<N: Number, C: Config<Number = N>> Acceleration<C> {
     /// [`Acceleration::build_with`] in place, so that the structures in a `static` (the
     /// firmware's scene) are never copied through the stack.
     pub fn rebuild(&mut self, camera: &Camera<N>, optimizations: Optimizations, objects: &[ObjectDescription], tuning: Tuning) {
-        let count = objects.len().min(MAX_OBJECTS).min(usize::from(u16::MAX));
+        let count = objects.len().min(self.order.slots().len()).min(usize::from(u16::MAX));
         // The geometry as the tracer will see it: the inverse rounded to N, inverted back.
         let of = |index: usize| {
             let geometry = objects.get(index).and_then(rendered_geometry::<N>)?;
@@ -103,7 +130,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
     /// `rebuild` for the same bounds, but that objects reaching the eye plane cover the whole
     /// screen (the eye-plane clip needs the `f64` silhouettes).
     pub fn rebuild_from_bounds(&mut self, camera: &Camera<N>, optimizations: Optimizations, bounds: &[ObjectBounds<N>]) {
-        let count = bounds.len().min(MAX_OBJECTS).min(usize::from(u16::MAX));
+        let count = bounds.len().min(self.order.slots().len()).min(usize::from(u16::MAX));
         self.rebuild_with(camera, optimizations, Tuning::IMPROVED, count, |index| bounds.get(index).map(|b| (*b, None)));
     }
 
@@ -123,14 +150,14 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
         self.optimizations = optimizations;
         self.tuning = tuning;
         self.screen = screen;
-        for (index, place) in self.order.iter_mut().enumerate() {
+        for (index, place) in self.order.slots_mut().iter_mut().enumerate() {
             *place = index as u16;
         }
-        self.extents.fill(Extent::whole(&screen));
-        self.near.fill(-N::MAX);
-        self.stadiums.fill(None);
+        self.extents.slots_mut().fill(Extent::whole(&screen));
+        self.near.slots_mut().fill(-N::MAX);
+        self.stadiums.slots_mut().fill(None);
         #[cfg(feature = "acceleration-tables")]
-        self.shadow.fill(ShadowBound::always());
+        self.shadow.slots_mut().fill(ShadowBound::always());
         let corners = if SILHOUETTES { window_corners(&screen, camera) } else { [[0.0; 3]; 4] };
         let map = ScreenMap::new(camera);
         // Our tuning: capsules seen from the eye, in the number type (`capsule`); the thesis's:
@@ -138,15 +165,15 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
         // Without the `f64-silhouettes` feature (the firmware) there are only the capsules.
         let capsules = tuning.tight_silhouettes || !SILHOUETTES;
         // And each object's capsule for the grid's per-entry depth bounds (28 bytes in f32).
-        let mut stored = [Capsule::UNSET; MAX_OBJECTS];
-        let mut shapes = [Primitive::Sphere; MAX_OBJECTS];
+        let mut stored = C::PerObject::<Capsule<N>>::filled(count, Capsule::UNSET);
+        let mut shapes = C::PerObject::<Primitive>::filled(count, Primitive::Sphere);
         for index in 0..count {
             let Some((bounds, geometry)) = of(index) else { continue };
-            if let Some(shape) = shapes.get_mut(index) {
+            if let Some(shape) = shapes.slots_mut().get_mut(index) {
                 *shape = bounds.primitive;
             }
             let capsule = if capsules { bounds.capsule } else { Capsule::UNSET };
-            if let Some(slot) = stored.get_mut(index) {
+            if let Some(slot) = stored.slots_mut().get_mut(index) {
                 *slot = capsule;
             }
             // A capsule that reaches the eye plane covers the whole screen; its object's f64
@@ -161,11 +188,11 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
             };
             // Pixelbuffer fills the extents' octagons (`render::fill_volumes`).
             if optimizations.extents || optimizations.grid || (optimizations.pixelbuffer && capsules) {
-                self.extents[index] = if reaches_eye {
+                self.extents.slots_mut()[index] = if reaches_eye {
                     silhouette(true)
                 } else if capsules {
                     let (covered, stadium) = map.cover_and_stadium(&capsule);
-                    if let Some(slot) = self.stadiums.get_mut(index) {
+                    if let Some(slot) = self.stadiums.slots_mut().get_mut(index) {
                         *slot = stadium;
                     }
                     Extent::of_cover(&map, &covered)
@@ -176,20 +203,20 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
             if optimizations.sortlist {
                 if capsules && !reaches_eye {
                     if let Some(bound) = map.depth_bound(&capsule) {
-                        self.near[index] = bound;
+                        self.near.slots_mut()[index] = bound;
                     }
                 } else if let Some(bound) = geometry.as_ref().filter(|_| SILHOUETTES).and_then(|geometry| sortlist::depth_bound(&screen, &corners, geometry)) {
-                    self.near[index] = N::from_f64(bound);
+                    self.near.slots_mut()[index] = N::from_f64(bound);
                 }
             }
             #[cfg(feature = "acceleration-tables")]
             if tuning.shadow_culling && optimizations.extents {
-                self.shadow[index] = bounds.shadow;
+                self.shadow.slots_mut()[index] = bounds.shadow;
             }
         }
         if optimizations.sortlist {
-            let near = &self.near;
-            if let Some(order) = self.order.get_mut(..count) {
+            let near = self.near.slots();
+            if let Some(order) = self.order.slots_mut().get_mut(..count) {
                 sortlist::sort_by_bound(order, |i| near.get(i).copied().unwrap_or(-N::MAX));
             }
         }
@@ -197,17 +224,17 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
             self.grid.clear();
             return;
         }
-        let capsules_of = |index: usize| stored.get(index).copied();
+        let capsules_of = |index: usize| stored.slots().get(index).copied();
         let polygon = |index: usize| match of(index).and_then(|(_, geometry)| geometry) {
             Some(geometry) if SILHOUETTES => screen.project_object(&geometry, tuning.tight_silhouettes),
             _ => projection::Projected::Whole,
         };
-        let near = &self.near;
+        let near = self.near.slots();
         let block_capsule = |object: u16, columns: (u16, u16), rows: (u16, u16)| -> N {
             let index = usize::from(object);
             let global = near.get(index).copied().unwrap_or(-N::MAX);
             // Only cylinders and cones gain: a sphere's or cube's capsule is a ball.
-            let shaped = shapes.get(index).is_some_and(|p| matches!(p, Primitive::Cylinder | Primitive::Cone));
+            let shaped = shapes.slots().get(index).is_some_and(|p| matches!(p, Primitive::Cylinder | Primitive::Cone));
             let block = if shaped { capsules_of(index).and_then(|capsule| map.block_depth_bound(&capsule, columns, rows)) } else { None };
             match block {
                 Some(bound) if bound > global => bound,
@@ -236,8 +263,8 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
             (true, false) => grid::CellShape::Polygons,
             (true, true) => grid::CellShape::Octagons,
         };
-        let (Some(order), Some(extents)) = (self.order.get(..count), self.extents.get(..count)) else { return };
-        let stadiums = &self.stadiums;
+        let (Some(order), Some(extents)) = (self.order.slots().get(..count), self.extents.slots().get(..count)) else { return };
+        let stadiums = self.stadiums.slots();
         let stadium = |index: usize| stadiums.get(index).copied().flatten();
         self.grid.rebuild(&screen, order, extents, polygon, stadium, cells, depth);
     }
@@ -251,7 +278,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
     /// Every object, in test order (sorted by depth bound with Sortlist).
     #[inline]
     pub fn order(&self) -> &[u16] {
-        self.order.get(..self.count).unwrap_or(&[])
+        self.order.slots().get(..self.count).unwrap_or(&[])
     }
 
     pub fn tuning(&self) -> Tuning {
@@ -262,7 +289,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
     /// are not computed).
     #[inline]
     pub fn in_extent(&self, object: usize, pixel: PixelPosition) -> bool {
-        self.extents.get(object).is_some_and(|extent| {
+        self.extents.slots().get(object).is_some_and(|extent| {
             extent.contains(pixel.column, pixel.row)
                 && (!self.tuning.tight_silhouettes || extent.diagonals_contain(pixel.column, pixel.row, self.screen.height))
         })
@@ -289,26 +316,26 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
     /// Extents: whether the pixel lies outside the object's rectangle (skip it untested).
     #[inline]
     pub fn outside_extent(&self, object: usize, pixel: PixelPosition) -> bool {
-        let Some(extent) = self.extents.get(object) else { return false };
+        let Some(extent) = self.extents.slots().get(object) else { return false };
         (self.optimizations.extents && !extent.contains(pixel.column, pixel.row))
             || (self.tuning.tight_silhouettes
                 && (self.optimizations.extents || self.optimizations.grid)
                 && (!extent.diagonals_contain(pixel.column, pixel.row, self.screen.height)
-                    || self.stadiums.get(object).copied().flatten().is_some_and(|stadium| !stadium.contains(pixel.column, pixel.row))))
+                    || self.stadiums.slots().get(object).copied().flatten().is_some_and(|stadium| !stadium.contains(pixel.column, pixel.row))))
     }
 
     /// Sortlist: whether every hit on `object` (and so on every later candidate) lies beyond
     /// the nearest hit so far, `t`. Strict, so an equal `t` is still tested.
     #[inline]
     pub fn beyond(&self, object: usize, t: N) -> bool {
-        self.sorts() && self.near.get(object).is_some_and(|near| *near > t)
+        self.sorts() && self.near.slots().get(object).is_some_and(|near| *near > t)
     }
 
     /// The object's view from the light for the per-render shadow table (always meeting
     /// every shadow ray without the `acceleration-tables` feature).
     pub fn light_footprint(&self, object: usize, light: shadow_culling::LightPosition<N>) -> shadow_culling::LightFootprint<N> {
         #[cfg(feature = "acceleration-tables")]
-        if let Some(bound) = self.shadow.get(object) {
+        if let Some(bound) = self.shadow.slots().get(object) {
             return bound.footprint(light);
         }
         let _ = (object, light);
@@ -318,7 +345,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
     #[inline]
     pub fn may_shadow(&self, object: usize, point: Vector3<N>, direction: Vector3<N>, length: N) -> bool {
         #[cfg(feature = "acceleration-tables")]
-        if let Some(bound) = self.shadow.get(object) {
+        if let Some(bound) = self.shadow.slots().get(object) {
             return bound.may_block(point, direction, length);
         }
         let _ = (object, point, direction, length);
@@ -343,24 +370,24 @@ impl<N: Number, const MAX_OBJECTS: usize> Acceleration<N, MAX_OBJECTS> {
         self.grid.entries()
     }
 
-    /// The entries the grid's pool holds ([`grid::POOL_PER_OBJECT`] per object).
-    pub const fn grid_capacity() -> usize {
-        grid::POOL_PER_OBJECT * MAX_OBJECTS
+    /// The entries the grid's pool holds ([`Config::GRID_ENTRIES_PER_OBJECT`] per object).
+    pub fn grid_capacity(&self) -> usize {
+        self.grid.capacity()
     }
 
     /// Sortlist's lower bound of `t` for the object, as the render uses it (`None`: none known,
     /// or Sortlist off).
     pub fn near_bound(&self, object: usize) -> Option<N> {
-        self.near.get(object).copied().filter(|near| *near != -N::MAX)
+        self.near.slots().get(object).copied().filter(|near| *near != -N::MAX)
     }
 
     /// The object's silhouette as a stadium, when it has one (our tuning).
     pub fn stadium(&self, object: usize) -> Option<capsule::Stadium> {
-        self.stadiums.get(object).copied().flatten()
+        self.stadiums.slots().get(object).copied().flatten()
     }
 
     pub fn extent(&self, object: usize) -> Option<Extent> {
-        self.extents.get(object).copied()
+        self.extents.slots().get(object).copied()
     }
 }
 

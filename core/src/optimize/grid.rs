@@ -1,7 +1,7 @@
 //! Grid (§4.7.4, `makegrid`): the screen cut into 20x20 cells, each with the objects that may
 //! cover it, in test order (so with Sortlist each cell list stays sorted).
 //!
-//! No heap: the cell lists share one pool of `POOL_PER_OBJECT · MAX_OBJECTS` entries of three
+//! No heap: the cell lists share one pool of `Config::GRID_ENTRIES_PER_OBJECT` entries an object, of three
 //! `u16`s, with 401 `u16` start offsets. The cell size is the thesis's `(pixels − 1)/20 + 1`.
 //! A cell list simply ends at the next cell's start (the thesis's NULL-dereferencing
 //! `nextobject`, digest B4, cannot happen). Should a scene need more entries than the pool
@@ -18,6 +18,8 @@ use core::num::NonZeroU16;
 
 use super::capsule::Stadium;
 use super::extents::Extent;
+use crate::config::{Arrays, Config, Table};
+use crate::model::Objects;
 use crate::number::Number;
 use super::pixelbuffer::band_span;
 use super::projection::{Projected, Screen};
@@ -26,33 +28,6 @@ use super::projection::{Projected, Screen};
 pub const GRID_SIZE: u16 = 20;
 /// No cells at all without the `acceleration-tables` feature (the grid is then inactive).
 const CELLS: usize = if super::build_options::TABLES { GRID_SIZE as usize * GRID_SIZE as usize } else { 0 };
-/// Pool entries per object: an object may overlap this many cells on average (24), or what
-/// the build's `MICROTRACE_GRID_ENTRIES_PER_OBJECT` says: the firmware's xtask sets it to the
-/// entries the scene's grid holds at its view, divided by its objects and rounded up, so that
-/// the pool is sized by the scene, not by a per-object worst case (a view that needs more
-/// switches the grid off: slower, never a different image). Zero without the
-/// `acceleration-tables` feature: the grid is then always inactive.
-pub const POOL_PER_OBJECT: usize = if cfg!(feature = "acceleration-tables") {
-    match option_env!("MICROTRACE_GRID_ENTRIES_PER_OBJECT") {
-        Some(text) if !text.is_empty() => decimal(text),
-        _ => 24,
-    }
-} else {
-    0
-};
-
-/// A decimal number at compile time (a bad one stops the build, naming the variable).
-const fn decimal(text: &str) -> usize {
-    let mut value = 0usize;
-    let mut rest = text.as_bytes();
-    while let [digit, tail @ ..] = rest {
-        assert!(digit.is_ascii_digit() && value < 10_000, "MICROTRACE_GRID_ENTRIES_PER_OBJECT: expected a number of entries below 10000, e.g. 9");
-        value = value * 10 + (*digit - b'0') as usize;
-        rest = tail;
-    }
-    value
-}
-
 /// What an entry knows of its object within the cell.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum CellShape {
@@ -81,35 +56,51 @@ struct CellSize {
     height: NonZeroU16,
 }
 
-#[derive(Clone, Debug)]
-pub struct Grid<N, const MAX_OBJECTS: usize> {
+pub struct Grid<C: Config> {
     /// The cells' size; `None` when the grid is off or its pool overflowed (and, all bytes
     /// zero, before it is built).
     cells: Option<CellSize>,
     starts: [u16; CELLS + 1],
-    pool: [[Entry; POOL_PER_OBJECT]; MAX_OBJECTS],
+    pool: C::GridPool<Entry>,
     /// With Sortlist: each entry's lower bound of `t` for the part of its object seen through
     /// the entry's rectangle (cell lists are sorted by it).
-    depth: [[N; POOL_PER_OBJECT]; MAX_OBJECTS],
+    depth: C::GridPool<C::Number>,
 }
 
-impl<N: Number, const MAX_OBJECTS: usize> Grid<N, MAX_OBJECTS> {
+impl<C: Config> core::fmt::Debug for Grid<C> {
+    fn fmt(&self, formatter: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        formatter.debug_struct("Grid").field("cells", &self.cells).field("entries", &self.entries()).field("capacity", &self.pool.slots().len()).finish()
+    }
+}
+
+impl<C: Config> Clone for Grid<C> {
+    fn clone(&self) -> Self {
+        Self { cells: self.cells, starts: self.starts, pool: self.pool.clone(), depth: self.depth.clone() }
+    }
+}
+
+impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize> Grid<Arrays<N, K, O, POOL, DEPTH, ROW>> {
     /// Every byte zero, inactive: the value before [`Grid::rebuild`] (a `static` holding it
     /// costs zero-initialised RAM and no flash).
     pub const UNSET: Self = Self {
         cells: None,
         starts: [0; CELLS + 1],
-        pool: [[[0; 3]; POOL_PER_OBJECT]; MAX_OBJECTS],
-        depth: [[N::ZEROED; POOL_PER_OBJECT]; MAX_OBJECTS],
+        pool: [[[0; 3]; POOL]; K],
+        depth: [[N::ZEROED; POOL]; K],
     };
+}
 
-    pub fn inactive() -> Self {
-        Self {
-            cells: None,
-            starts: [0; CELLS + 1],
-            pool: [[[0; 3]; POOL_PER_OBJECT]; MAX_OBJECTS],
-            depth: [[-N::MAX; POOL_PER_OBJECT]; MAX_OBJECTS],
-        }
+impl<N: Number, C: Config<Number = N>> Grid<C> {
+    /// An inactive grid whose pool holds [`Config::GRID_ENTRIES_PER_OBJECT`] entries for each
+    /// of `objects`.
+    pub fn inactive(objects: usize) -> Self {
+        let entries = objects.saturating_mul(C::GRID_ENTRIES_PER_OBJECT);
+        Self { cells: None, starts: [0; CELLS + 1], pool: C::GridPool::filled(entries, [0; 3]), depth: C::GridPool::filled(entries, -N::MAX) }
+    }
+
+    /// The entries the pool holds.
+    pub fn capacity(&self) -> usize {
+        self.pool.slots().len()
     }
 
     /// `order`: the objects in test order; `extents` indexed by object number; `polygon` gives
@@ -122,7 +113,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Grid<N, MAX_OBJECTS> {
         cells: CellShape,
         depth: Option<&BlockDepth<'_, N>>,
     ) -> Self {
-        let mut grid = Self::inactive();
+        let mut grid = Self::inactive(order.len());
         grid.rebuild(screen, order, extents, polygon, |_| None, cells, depth);
         grid
     }
@@ -144,7 +135,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Grid<N, MAX_OBJECTS> {
         // list reaches (clearing them cost the lattice 7 k instructions a frame on the Cortex-M4F).
         self.cells = None;
         self.starts.fill(0);
-        if POOL_PER_OBJECT == 0 {
+        if C::GRID_ENTRIES_PER_OBJECT == 0 {
             return;
         }
         let grid = self;
@@ -217,12 +208,12 @@ impl<N: Number, const MAX_OBJECTS: usize> Grid<N, MAX_OBJECTS> {
         // One visit: the entries in test order into the pool, each one's cell noted and its
         // depth bound computed; then a stable counting sort by cell, in place. (Visiting twice,
         // to count and then to place, cost the lattice a third of its preparation.)
-        let capacity = (POOL_PER_OBJECT * MAX_OBJECTS).min(u16::MAX as usize);
-        let pool = grid.pool.as_flattened_mut();
-        let bounds = grid.depth.as_flattened_mut();
+        let capacity = grid.pool.slots().len().min(u16::MAX as usize);
+        let pool = grid.pool.slots_mut();
+        let bounds = grid.depth.slots_mut();
         // Each entry's cell, then its place in the sorted pool.
-        let mut places = [[0u16; POOL_PER_OBJECT]; MAX_OBJECTS];
-        let places = places.as_flattened_mut();
+        let mut places = C::GridPool::<u16>::filled(capacity, 0);
+        let places = places.slots_mut();
         // Entries per cell, then each cell's next free place.
         let mut next = [0u16; CELLS];
         let mut used = 0usize;
@@ -300,8 +291,8 @@ impl<N: Number, const MAX_OBJECTS: usize> Grid<N, MAX_OBJECTS> {
     pub fn clear(&mut self) {
         self.cells = None;
         self.starts.fill(0);
-        self.pool.as_flattened_mut().fill([0; 3]);
-        self.depth.as_flattened_mut().fill(-N::MAX);
+        self.pool.slots_mut().fill([0; 3]);
+        self.depth.slots_mut().fill(-N::MAX);
     }
 
     /// Whether the grid is in use (on, and its pool did not overflow).
@@ -320,7 +311,7 @@ impl<N: Number, const MAX_OBJECTS: usize> Grid<N, MAX_OBJECTS> {
         let (start, end) = (usize::from(*start), usize::from(*end));
         let dx = (column - cell_column * width.get()).min(255);
         let dy = (row - cell_row * height.get()).min(255);
-        Some((self.pool.as_flattened().get(start..end).unwrap_or(&[]), self.depth.as_flattened().get(start..end).unwrap_or(&[]), dx, dy))
+        Some((self.pool.slots().get(start..end).unwrap_or(&[]), self.depth.slots().get(start..end).unwrap_or(&[]), dx, dy))
     }
 
     /// Total entries over all cells.

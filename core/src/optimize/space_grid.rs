@@ -15,6 +15,8 @@
 //! on the objects, and costs a division per object and axis).
 
 use crate::geometry::{Ray, Vector3};
+use crate::config::{Arrays, Config, Table, SPACE_ENTRIES_PER_OBJECT};
+use crate::model::Objects;
 use crate::number::Number;
 use crate::optimize::bounding_sphere::BoundingSphere;
 use crate::optimize::shadow_culling::BlockerSet;
@@ -24,35 +26,48 @@ pub const MAX_RESOLUTION: usize = 8;
 /// Cells at most.
 pub const CELLS: usize = MAX_RESOLUTION * MAX_RESOLUTION * MAX_RESOLUTION;
 /// Cell entries per object on average at most (else no grid).
-pub const ENTRIES_PER_OBJECT: usize = 8;
+pub const ENTRIES_PER_OBJECT: usize = SPACE_ENTRIES_PER_OBJECT;
 /// An object reaching more cells than this is tested by every ray instead.
 pub const LARGE_OBJECT_CELLS: usize = 64;
 
-#[derive(Clone, Debug)]
-pub struct SpaceGrid<N, const MAX_OBJECTS: usize> {
+pub struct SpaceGrid<C: Config> {
     /// Cells per axis (0: no grid).
     resolution: usize,
-    low: Vector3<N>,
-    cell: Vector3<N>,
+    low: Vector3<C::Number>,
+    cell: Vector3<C::Number>,
     /// Where each cell's entries start in `entries` (cell `i`'s run is `starts[i]..starts[i+1]`).
     starts: [u16; CELLS + 1],
-    entries: [[u16; ENTRIES_PER_OBJECT]; MAX_OBJECTS],
+    entries: C::SpaceEntries,
     /// Objects tested by every ray (too large for the cells).
     large: BlockerSet,
     large_beyond: bool,
 }
 
-impl<N: Number, const MAX_OBJECTS: usize> SpaceGrid<N, MAX_OBJECTS> {
+impl<C: Config> core::fmt::Debug for SpaceGrid<C> {
+    fn fmt(&self, formatter: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        formatter.debug_struct("SpaceGrid").field("resolution", &self.resolution).field("large", &self.large).field("large_beyond", &self.large_beyond).finish_non_exhaustive()
+    }
+}
+
+impl<C: Config> Clone for SpaceGrid<C> {
+    fn clone(&self) -> Self {
+        Self { resolution: self.resolution, low: self.low, cell: self.cell, starts: self.starts, entries: self.entries.clone(), large: self.large, large_beyond: self.large_beyond }
+    }
+}
+
+impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize> SpaceGrid<Arrays<N, K, O, POOL, DEPTH, ROW>> {
     pub const NONE: Self = Self {
         resolution: 0,
         low: Vector3 { x: N::ZEROED, y: N::ZEROED, z: N::ZEROED },
         cell: Vector3 { x: N::ZEROED, y: N::ZEROED, z: N::ZEROED },
         starts: [0; CELLS + 1],
-        entries: [[0; ENTRIES_PER_OBJECT]; MAX_OBJECTS],
+        entries: [[0; ENTRIES_PER_OBJECT]; K],
         large: BlockerSet::EMPTY,
         large_beyond: false,
     };
+}
 
+impl<N: Number, C: Config<Number = N>> SpaceGrid<C> {
     /// Whether there is a grid to walk.
     pub fn is_built(&self) -> bool {
         self.resolution > 0
@@ -65,7 +80,7 @@ impl<N: Number, const MAX_OBJECTS: usize> SpaceGrid<N, MAX_OBJECTS> {
         self.large = BlockerSet::EMPTY;
         self.large_beyond = false;
         let Some(first) = spheres.first() else { return };
-        if !N::SHADOW_CULLING_HOLDS || spheres.iter().any(|s| s.radius == N::MAX) || spheres.len() > MAX_OBJECTS {
+        if !N::SHADOW_CULLING_HOLDS || spheres.iter().any(|s| s.radius == N::MAX) || spheres.len() > C::MAX_OBJECTS {
             return;
         }
         let mut low = first.centre;
@@ -121,7 +136,7 @@ impl<N: Number, const MAX_OBJECTS: usize> SpaceGrid<N, MAX_OBJECTS> {
             if let Some((a, b)) = self.cell_box(s) {
                 for cell in Self::cells_of(a, b, resolution) {
                     let Some(position) = next.get_mut(cell) else { continue };
-                    if let Some(entry) = self.entries.as_flattened_mut().get_mut(usize::from(*position)) {
+                    if let Some(entry) = self.entries.slots_mut().get_mut(usize::from(*position)) {
                         *entry = index as u16;
                     }
                     *position += 1;
@@ -164,7 +179,7 @@ impl<N: Number, const MAX_OBJECTS: usize> SpaceGrid<N, MAX_OBJECTS> {
     /// The objects of one cell.
     fn cell_objects(&self, cell: usize) -> &[u16] {
         let (Some(&start), Some(&end)) = (self.starts.get(cell), self.starts.get(cell + 1)) else { return &[] };
-        self.entries.as_flattened().get(usize::from(start)..usize::from(end)).unwrap_or(&[])
+        self.entries.slots().get(usize::from(start)..usize::from(end)).unwrap_or(&[])
     }
 
     /// Walks the cells along `ray` in order, calling `test(object)` once per object met (and

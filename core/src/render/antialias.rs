@@ -27,7 +27,8 @@ use super::shadow_ray::{ShadowCache, ShadowCulling};
 use super::Statistics;
 use crate::number::Number;
 use crate::pixel::PixelSink;
-use crate::scene::{Objects, PreparedAntialias, Scene};
+use crate::config::{Config, Table};
+use crate::scene::{Prepared, PreparedAntialias};
 
 type Rgb = [u8; 3];
 
@@ -52,13 +53,13 @@ fn differ(corners: &[Rgb; 4], threshold: u8) -> bool {
 }
 
 /// Traces one sample of the grid and returns its colour.
-struct Sampler<'a, 'c, N, M, const MAX_OBJECTS: usize, O, const DEPTH: usize> {
-    scene: &'a Scene<N, MAX_OBJECTS, O>,
+struct Sampler<'a, 'c, N, M, C: Config> {
+    scene: &'a Prepared<C>,
     mode: &'a M,
     culling: &'a [ShadowCulling<'c, N>],
 }
 
-impl<N: Number, M: Mode<N>, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize> Sampler<'_, '_, N, M, MAX_OBJECTS, O, DEPTH> {
+impl<N: Number, M: Mode<N>, C: Config<Number = N>> Sampler<'_, '_, N, M, C> {
     fn sample(&self, x: u16, y: u16, statistics: &mut Statistics, cache: &mut ShadowCache) -> Rgb {
         let pixel = self.scene.camera.pixel(x, y);
         let surface = primary_surface_then(self.scene, pixel, statistics, cache, self.culling, |at, material, lighting, statistics, cache| {
@@ -66,7 +67,7 @@ impl<N: Number, M: Mode<N>, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH
             #[cfg(feature = "ray-tree")]
             if self.scene.has_ray_tree() {
                 let context = super::ray_tree::TreeContext { scene: self.scene, colours: self.mode, pixel, culling: self.culling };
-                if let Some(mixed) = super::ray_tree::trace_tree::<N, M, MAX_OBJECTS, O, DEPTH>(&context, *at, local, statistics, cache) {
+                if let Some(mixed) = super::ray_tree::trace_tree::<N, M, C>(&context, *at, local, statistics, cache) {
                     return mixed;
                 }
             }
@@ -78,15 +79,15 @@ impl<N: Number, M: Mode<N>, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH
     }
 }
 
-fn to_rgb<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(colour: [N; 3], scene: &Scene<N, MAX_OBJECTS, O>) -> Rgb {
+fn to_rgb<N: Number, C: Config<Number = N>>(colour: [N; 3], scene: &Prepared<C>) -> Rgb {
     colour.map(|channel| (channel + scene.constants.half).floor_to_i32().clamp(0, 255) as u8)
 }
 
 /// Renders the image rows `rows` of an antialiased scene into `sink`, the pixels in the mode's
 /// values (`Mode::averaged`).
 #[allow(clippy::too_many_arguments)]
-pub(crate) fn render_antialiased<N, P, S, M, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize, const ROW: usize>(
-    scene: &Scene<N, MAX_OBJECTS, O>,
+pub(crate) fn render_antialiased<N, P, S, M, C: Config<Number = N>>(
+    scene: &Prepared<C>,
     antialias: PreparedAntialias,
     sink: &mut S,
     statistics: &mut Statistics,
@@ -99,21 +100,22 @@ pub(crate) fn render_antialiased<N, P, S, M, const MAX_OBJECTS: usize, O: Object
     S: PixelSink<P>,
     M: Mode<N, Pixel = P>,
 {
-    let sampler = Sampler::<N, M, MAX_OBJECTS, O, DEPTH> { scene, mode, culling };
+    let sampler = Sampler::<N, M, C> { scene, mode, culling };
     let (width, height) = (antialias.image.width(), antialias.image.height());
     let step = antialias.step();
     let rows = rows.start..rows.end.min(height);
     let mut cache = ShadowCache::default();
     // A corner row's sample, with Pixelbuffer's coverage of that row (uncovered: background).
-    let corner = |x: u16, y: u16, coverage: &Option<RowCoverage<MAX_OBJECTS>>, statistics: &mut Statistics, cache: &mut ShadowCache| {
+    let corner = |x: u16, y: u16, coverage: &Option<RowCoverage<C>>, statistics: &mut Statistics, cache: &mut ShadowCache| {
         if coverage.as_ref().is_some_and(|coverage| !coverage.covers(x)) {
             to_rgb(mode.background(), scene)
         } else {
             sampler.sample(x, y, statistics, cache)
         }
     };
-    let coverage_of = |y: u16| scene.optimizations.pixelbuffer.then(|| RowCoverage::<MAX_OBJECTS>::of(scene, y));
-    let mut top: [Rgb; ROW] = [[0; 3]; ROW];
+    let coverage_of = |y: u16| scene.optimizations.pixelbuffer.then(|| RowCoverage::<C>::of(scene, y));
+    let mut corners = C::CornerRow::filled(usize::from(width) + 1, [0; 3]);
+    let top = corners.slots_mut();
     let Some(first) = rows.clone().next() else { return };
     let first_coverage = coverage_of(first * step);
     for (column, slot) in (0..=width).zip(top.iter_mut()) {
@@ -122,7 +124,7 @@ pub(crate) fn render_antialiased<N, P, S, M, const MAX_OBJECTS: usize, O: Object
     for row in rows {
         statistics.pixels += u64::from(width);
         let (y, below) = (row * step, (row + 1) * step);
-        let top_coverage = if usize::from(width) < ROW { None } else { Some(coverage_of(y)) };
+        let top_coverage = if usize::from(width) < top.len() { None } else { Some(coverage_of(y)) };
         let coverage = coverage_of(below);
         let mut bottom_left = corner(0, below, &coverage, statistics, &mut cache);
         for column in 0..width {
@@ -150,8 +152,8 @@ pub(crate) fn render_antialiased<N, P, S, M, const MAX_OBJECTS: usize, O: Object
 }
 
 /// The area-weighted mean of one pixel, subdividing where its corners differ.
-fn pixel_mean<N: Number, M: Mode<N>, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize>(
-    sampler: &Sampler<'_, '_, N, M, MAX_OBJECTS, O, DEPTH>,
+fn pixel_mean<N: Number, M: Mode<N>, C: Config<Number = N>>(
+    sampler: &Sampler<'_, '_, N, M, C>,
     pixel: Square,
     antialias: PreparedAntialias,
     statistics: &mut Statistics,

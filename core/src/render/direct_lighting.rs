@@ -10,15 +10,16 @@ use super::Statistics;
 use crate::geometry::Vector3;
 use crate::number::Number;
 use crate::light::PreparedLight;
-use crate::scene::{Objects, Scene};
+use crate::config::Config;
+use crate::scene::Prepared;
 use crate::light::{lighting, Lighting};
 
 /// The lighting at `point` on object `object` with the unit `normal` facing the incoming ray
 /// `view`; `start` is where shadow rays leave (the point moved off the surface).
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
-pub(crate) fn direct_lighting<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
-    scene: &Scene<N, MAX_OBJECTS, O>,
+pub(crate) fn direct_lighting<N: Number, C: Config<Number = N>>(
+    scene: &Prepared<C>,
     object: usize,
     point: Vector3<N>,
     normal: Vector3<N>,
@@ -42,8 +43,8 @@ fn scaled<N: Number>(lighting: Lighting<N>, factor: N) -> Lighting<N> {
 }
 
 /// What every light's term at one hit shares.
-struct Hit<'a, N, const MAX_OBJECTS: usize, O> {
-    scene: &'a Scene<N, MAX_OBJECTS, O>,
+struct Hit<'a, N, C: Config> {
+    scene: &'a Prepared<C>,
     object: usize,
     point: Vector3<N>,
     normal: Vector3<N>,
@@ -51,7 +52,7 @@ struct Hit<'a, N, const MAX_OBJECTS: usize, O> {
     power: u32,
 }
 
-impl<N: Number, const MAX_OBJECTS: usize, O: Objects<N>> Hit<'_, N, MAX_OBJECTS, O> {
+impl<N: Number, C: Config<Number = N>> Hit<'_, N, C> {
     /// The first light's term scaled by its intensity plus the further lights' terms: out of
     /// line, so that a one-light scene's pixels carry none of it.
     #[inline(never)]

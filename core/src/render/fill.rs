@@ -9,7 +9,8 @@ use crate::optimize::extents::Extent;
 use crate::optimize::pixelbuffer::hull_span;
 use crate::optimize::projection::Projected;
 use crate::pixel::PixelSink;
-use crate::scene::{Objects, Scene};
+use crate::config::{Config, Table};
+use crate::scene::Prepared;
 
 /// Pixelbuffer's fill colour in PGA mode (the thesis's default `fillcolor`); the flood is its
 /// complement, so the two always differ.
@@ -26,7 +27,7 @@ pub const RGB_FLOOD: [u8; 3] = [RGB_FILL[0] ^ 0xFF, RGB_FILL[1] ^ 0xFF, RGB_FILL
 /// computed when the scene was prepared), row span by row span, in integer arithmetic. With
 /// the thesis's tuning, the thesis's fill: each 8-vertex volume projected and scan-converted. Public so a viewer can
 /// record which pixels the fill marks (into a sink of its own, with its own two values).
-pub fn fill_volumes<N, P, S, const MAX_OBJECTS: usize, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, fill: P, flood: P)
+pub fn fill_volumes<N, P, S, C: Config<Number = N>>(scene: &Prepared<C>, sink: &mut S, fill: P, flood: P)
 where
     N: Number,
     P: Copy,
@@ -36,7 +37,7 @@ where
 }
 
 /// [`fill_volumes`] within the image rows `rows` only.
-pub fn fill_volumes_rows<N, P, S, const MAX_OBJECTS: usize, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, fill: P, flood: P, rows: Range<u16>)
+pub fn fill_volumes_rows<N, P, S, C: Config<Number = N>>(scene: &Prepared<C>, sink: &mut S, fill: P, flood: P, rows: Range<u16>)
 where
     N: Number,
     P: Copy,
@@ -111,26 +112,27 @@ where
 /// Pixelbuffer traces (the rest hold the flood colour and become the background). Each object
 /// marks at most one span a row; should more come, the whole row counts as covered (a traced
 /// pixel outside the fill is the background anyway).
-pub(crate) struct RowCoverage<const MAX_OBJECTS: usize> {
-    spans: [(u16, u16); MAX_OBJECTS],
+pub(crate) struct RowCoverage<C: Config> {
+    spans: C::PerObject<(u16, u16)>,
     count: usize,
     overflowed: bool,
 }
 
-impl<const MAX_OBJECTS: usize> RowCoverage<MAX_OBJECTS> {
-    /// No span yet: covers nothing.
-    pub(crate) const fn empty() -> Self {
-        Self { spans: [(0, 0); MAX_OBJECTS], count: 0, overflowed: false }
+impl<C: Config> RowCoverage<C> {
+    /// No span yet: covers nothing (room for a span of each of `objects`).
+    #[inline(always)]
+    pub(crate) fn empty(objects: usize) -> Self {
+        Self { spans: C::PerObject::filled(objects, (0, 0)), count: 0, overflowed: false }
     }
 
-    pub(crate) fn of<N: Number, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, row: u16) -> Self {
-        let mut coverage = Self::empty();
+    pub(crate) fn of(scene: &Prepared<C>, row: u16) -> Self {
+        let mut coverage = Self::empty(scene.objects.len());
         fill_volumes_rows(scene, &mut coverage, true, false, row..row.saturating_add(1));
         coverage
     }
 
     pub(crate) fn covers(&self, column: u16) -> bool {
-        self.overflowed || self.spans.iter().take(self.count).any(|&(first, width)| column >= first && column - first < width)
+        self.overflowed || self.spans.slots().iter().take(self.count).any(|&(first, width)| column >= first && column - first < width)
     }
 
     /// The spans sorted by their first column (an insertion sort: a row has a few), or `None`
@@ -141,7 +143,7 @@ impl<const MAX_OBJECTS: usize> RowCoverage<MAX_OBJECTS> {
         if self.overflowed {
             return None;
         }
-        let spans = self.spans.get_mut(..self.count)?;
+        let spans = self.spans.slots_mut().get_mut(..self.count)?;
         for next in 1..spans.len() {
             let Some(&moving) = spans.get(next) else { break };
             let mut slot = next;
@@ -162,7 +164,7 @@ impl<const MAX_OBJECTS: usize> RowCoverage<MAX_OBJECTS> {
     }
 }
 
-impl<const MAX_OBJECTS: usize> PixelSink<bool> for RowCoverage<MAX_OBJECTS> {
+impl<C: Config> PixelSink<bool> for RowCoverage<C> {
     fn set_pixel(&mut self, x: u16, y: u16, filled: bool) {
         self.mark_row(x, y, 1, filled);
     }
@@ -176,7 +178,7 @@ impl<const MAX_OBJECTS: usize> PixelSink<bool> for RowCoverage<MAX_OBJECTS> {
         if !filled || width == 0 {
             return;
         }
-        match self.spans.get_mut(self.count) {
+        match self.spans.slots_mut().get_mut(self.count) {
             Some(span) => {
                 *span = (x, width);
                 self.count += 1;

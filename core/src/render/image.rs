@@ -12,7 +12,8 @@ use super::shadow_tables::with_shadow_culling;
 use super::Statistics;
 use crate::number::Number;
 use crate::pixel::{PixelSink, PixelSource};
-use crate::scene::{Objects, Scene};
+use crate::config::Config;
+use crate::scene::Prepared;
 
 /// Pixels read back per `read_row` call (a stack buffer; no row-sized buffer is needed).
 const READ_CHUNK: usize = 32;
@@ -20,8 +21,8 @@ const READ_CHUNK: usize = 32;
 /// The image rows `rows` into a sink that Pixelbuffer's marks are read back from (the orders
 /// `Whole` and `Rows`).
 #[allow(clippy::too_many_arguments)]
-pub(super) fn render_rows<N, P, S, M, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize, const ROW: usize>(
-    scene: &Scene<N, MAX_OBJECTS, O>,
+pub(super) fn render_rows<N, P, S, M, C: Config<Number = N>>(
+    scene: &Prepared<C>,
     sink: &mut S,
     statistics: &mut Statistics,
     rows: Range<u16>,
@@ -37,7 +38,7 @@ pub(super) fn render_rows<N, P, S, M, const MAX_OBJECTS: usize, O: Objects<N>, c
     #[cfg(feature = "antialias")]
     if let Some(antialias) = scene.antialias {
         return with_shadow_culling(scene, |culling| {
-            render_antialiased::<N, P, S, M, MAX_OBJECTS, O, DEPTH, ROW>(scene, antialias, sink, statistics, rows, mode, culling)
+            render_antialiased::<N, P, S, M, C>(scene, antialias, sink, statistics, rows, mode, culling)
         });
     }
     let camera = &scene.camera;
@@ -75,7 +76,7 @@ pub(super) fn render_rows<N, P, S, M, const MAX_OBJECTS: usize, O: Objects<N>, c
                 }
             }
             let pixel = camera.pixel(column, row);
-            let value = pixel_value::<N, M, MAX_OBJECTS, O, DEPTH>(scene, mode, pixel, statistics, &mut cache, culling).unwrap_or(background);
+            let value = pixel_value::<N, M, C>(scene, mode, pixel, statistics, &mut cache, culling).unwrap_or(background);
             sink.set_pixel(column, row, value);
             column += 1;
         }

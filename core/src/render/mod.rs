@@ -22,7 +22,7 @@ mod streamed;
 mod surface;
 
 pub use primary::{nearest_hit, nearest_hit_cached, NearestHit};
-pub use order::{render, Order, ANTIALIAS_ROW, Pass, Pga, PixelMode, Progressive, Rgb, Rows, StackSized, Streamed, Whole};
+pub use order::{render, Order, Pass, Pga, PixelMode, Progressive, Rgb, Rows, Streamed, Whole};
 pub use progressive::{traced_in_pass, PassStatistics, PASSES, PASS_SIZES};
 pub use shadow_ray::{in_shadow, in_shadow_cached, in_shadow_culled, shadow_origin, ShadowCache, ShadowCulling};
 pub use statistics::Statistics;

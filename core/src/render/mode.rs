@@ -5,7 +5,8 @@ use super::surface::NodeColours;
 use crate::camera::PixelPosition;
 use crate::model::{PreparedMaterial, Rgb888};
 use crate::number::Number;
-use crate::scene::{Objects, Scene};
+use crate::config::Config;
+use crate::scene::Prepared;
 use crate::light::Lighting;
 use crate::shading::{dither_threshold, pga_index, rgb_intensity, rgb_pixel, rgb_quantized};
 
@@ -20,11 +21,11 @@ pub(crate) trait Mode<N>: NodeColours<N> {
 /// PGA mode: a surface's palette index; a tree's node is its index's LUT colour, and a mixed
 /// pixel the LUT entry nearest the mix moved by the pixel's ordered dither (scene format,
 /// chapter 5; [`crate::model::Palette::dithered`]).
-pub(crate) struct PgaNodes<'a, N, const MAX_OBJECTS: usize, O> {
-    pub scene: &'a Scene<N, MAX_OBJECTS, O>,
+pub(crate) struct PgaNodes<'a, C: Config> {
+    pub scene: &'a Prepared<C>,
 }
 
-impl<N: Number, const MAX_OBJECTS: usize, O: Objects<N>> NodeColours<N> for PgaNodes<'_, N, MAX_OBJECTS, O> {
+impl<N: Number, C: Config<Number = N>> NodeColours<N> for PgaNodes<'_, C> {
     type Pixel = u8;
     fn finish(&self, colour: [N; 3], pixel: PixelPosition) -> u8 {
         let half = self.scene.constants.half;
@@ -40,11 +41,11 @@ impl<N: Number, const MAX_OBJECTS: usize, O: Objects<N>> NodeColours<N> for PgaN
 }
 
 #[cfg_attr(not(feature = "ray-tree"), allow(dead_code))]
-fn lut_colour<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, index: u8) -> [N; 3] {
+fn lut_colour<N: Number, C: Config<Number = N>>(scene: &Prepared<C>, index: u8) -> [N; 3] {
     scene.palette.entry(index).to_rgb888().map(|c| N::from_i32(i32::from(c)))
 }
 
-impl<N: Number, const MAX_OBJECTS: usize, O: Objects<N>> Mode<N> for PgaNodes<'_, N, MAX_OBJECTS, O> {
+impl<N: Number, C: Config<Number = N>> Mode<N> for PgaNodes<'_, C> {
     fn surface(&self, material: &PreparedMaterial<N>, lighting: Lighting<N>, pixel: PixelPosition) -> u8 {
         pga_index(material, lighting, &self.scene.constants, self.scene.dither, pixel)
     }
@@ -55,11 +56,11 @@ impl<N: Number, const MAX_OBJECTS: usize, O: Objects<N>> Mode<N> for PgaNodes<'_
 }
 
 /// RGB mode: the channels' intensities, clamped and rounded (or dithered) once at the end.
-pub(crate) struct RgbNodes<'a, N, const MAX_OBJECTS: usize, O> {
-    pub scene: &'a Scene<N, MAX_OBJECTS, O>,
+pub(crate) struct RgbNodes<'a, C: Config> {
+    pub scene: &'a Prepared<C>,
 }
 
-impl<N: Number, const MAX_OBJECTS: usize, O: Objects<N>> NodeColours<N> for RgbNodes<'_, N, MAX_OBJECTS, O> {
+impl<N: Number, C: Config<Number = N>> NodeColours<N> for RgbNodes<'_, C> {
     type Pixel = Rgb888;
     fn finish(&self, colour: [N; 3], pixel: PixelPosition) -> Rgb888 {
         rgb_quantized(colour, &self.scene.constants, self.scene.dither, pixel)
@@ -72,7 +73,7 @@ impl<N: Number, const MAX_OBJECTS: usize, O: Objects<N>> NodeColours<N> for RgbN
     }
 }
 
-impl<N: Number, const MAX_OBJECTS: usize, O: Objects<N>> Mode<N> for RgbNodes<'_, N, MAX_OBJECTS, O> {
+impl<N: Number, C: Config<Number = N>> Mode<N> for RgbNodes<'_, C> {
     fn surface(&self, material: &PreparedMaterial<N>, lighting: Lighting<N>, pixel: PixelPosition) -> Rgb888 {
         rgb_pixel(material, lighting, &self.scene.constants, self.scene.dither, pixel)
     }

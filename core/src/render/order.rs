@@ -13,10 +13,9 @@
 //!
 //! Every order gives the same final image, and `Whole`, `Streamed` and `Progressive` the same
 //! statistics (summed over the passes). Antialiasing and the ray tree are the scene's: how a
-//! pixel is computed, the same in every order. [`StackSized`] wraps an order for a chip: a ray
-//! tree at most `DEPTH` generations deep (a scene's deeper `depth` is cut there; without it the
-//! format's deepest, 8) and a row of `ROW` antialiasing corners (the image's width plus one
-//! shares every corner; fewer traces some twice).
+//! pixel is computed, the same in every order. The stack a render takes is the scene's
+//! [`Config`]'s: a ray tree at most `TREE_DEPTH` generations deep (a scene's deeper `depth` is
+//! cut there) and a row of `ANTIALIAS_ROW` antialiasing corners.
 
 use core::ops::Range;
 
@@ -24,15 +23,11 @@ use super::fill::{PGA_FILL, PGA_FLOOD, RGB_FILL, RGB_FLOOD};
 use super::mode::{PgaNodes, RgbNodes};
 use super::progressive::{self, PassStatistics};
 use super::{image, streamed, Statistics};
-use crate::model::{Rgb888, MAX_DEPTH};
+use crate::model::Rgb888;
 use crate::number::Number;
 use crate::pixel::{PixelSink, PixelSource};
-use crate::scene::{Objects, Scene};
-
-/// How many corners an antialiased render keeps of a row ([`render`] with the default stack): an
-/// image up to 2,048 pixels wide shares every corner (6 KB of stack); a wider one traces the
-/// corners beyond again.
-pub const ANTIALIAS_ROW: usize = 2049;
+use crate::config::Config;
+use crate::scene::Prepared;
 
 /// What a pixel is: [`Pga`] or [`Rgb`].
 pub trait PixelMode: sealed::Sealed + Copy {
@@ -78,42 +73,28 @@ pub struct Progressive;
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Pass(pub usize);
 
-/// An order with the render's stack sized for the scene (the firmware's): a ray tree at most
-/// `DEPTH` generations deep and a row of `ROW` antialiasing corners.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct StackSized<W, const DEPTH: usize, const ROW: usize>(pub W);
-
 /// How an image is walked, for pixels of mode `M` into a sink `S`: the orders above.
 pub trait Order<M: PixelMode, S>: sealed::Sealed {
     /// What the render counts: [`Statistics`], or one per pass.
     type Counts;
 
-    /// Renders `scene` in this order (the stack sized for `DEPTH` and `ROW`); [`render`] calls it.
+    /// Renders `scene` in this order; [`render`] calls it.
     #[doc(hidden)]
-    fn walk<N: Number, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize, const ROW: usize>(self, scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, counts: &mut Self::Counts);
+    fn walk<N: Number, C: Config<Number = N>>(self, scene: &Prepared<C>, sink: &mut S, counts: &mut Self::Counts);
 }
 
 /// Renders `scene` in `mode`, walking the image in `order`, into `sink`, adding what it counts
 /// to `counts` (the statistics of Table 4.2).
 #[inline]
-pub fn render<N, const MAX_OBJECTS: usize, O, M, W, S>(scene: &Scene<N, MAX_OBJECTS, O>, mode: M, order: W, sink: &mut S, counts: &mut W::Counts)
+pub fn render<N, C, M, W, S>(scene: &Prepared<C>, mode: M, order: W, sink: &mut S, counts: &mut W::Counts)
 where
     N: Number,
-    O: Objects<N>,
+    C: Config<Number = N>,
     M: PixelMode,
     W: Order<M, S>,
 {
     let _ = mode;
-    order.walk::<N, MAX_OBJECTS, O, { MAX_DEPTH as usize }, ANTIALIAS_ROW>(scene, sink, counts);
-}
-
-impl<M: PixelMode, S, W: Order<M, S>, const SIZED_DEPTH: usize, const SIZED_ROW: usize> Order<M, S> for StackSized<W, SIZED_DEPTH, SIZED_ROW> {
-    type Counts = W::Counts;
-
-    #[inline(always)]
-    fn walk<N: Number, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize, const ROW: usize>(self, scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, counts: &mut Self::Counts) {
-        self.0.walk::<N, MAX_OBJECTS, O, SIZED_DEPTH, SIZED_ROW>(scene, sink, counts);
-    }
+    order.walk::<N, C>(scene, sink, counts);
 }
 
 /// The orders for one mode: its nodes, its background and Pixelbuffer's two marks.
@@ -123,8 +104,8 @@ macro_rules! orders {
             type Counts = Statistics;
 
             #[inline(always)]
-            fn walk<N: Number, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize, const ROW: usize>(self, scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, counts: &mut Statistics) {
-                Rows(0..scene.viewport().height()).walk::<N, MAX_OBJECTS, O, DEPTH, ROW>(scene, sink, counts);
+            fn walk<N: Number, C: Config<Number = N>>(self, scene: &Prepared<C>, sink: &mut S, counts: &mut Statistics) {
+                Rows(0..scene.viewport().height()).walk::<N, C>(scene, sink, counts);
             }
         }
 
@@ -132,8 +113,8 @@ macro_rules! orders {
             type Counts = Statistics;
 
             #[inline(always)]
-            fn walk<N: Number, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize, const ROW: usize>(self, scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, counts: &mut Statistics) {
-                image::render_rows::<N, $pixel, S, _, MAX_OBJECTS, O, DEPTH, ROW>(scene, sink, counts, self.0, scene.$background(), ($fill, $flood), &$nodes { scene });
+            fn walk<N: Number, C: Config<Number = N>>(self, scene: &Prepared<C>, sink: &mut S, counts: &mut Statistics) {
+                image::render_rows::<N, $pixel, S, _, C>(scene, sink, counts, self.0, scene.$background(), ($fill, $flood), &$nodes { scene });
             }
         }
 
@@ -141,8 +122,8 @@ macro_rules! orders {
             type Counts = Statistics;
 
             #[inline(always)]
-            fn walk<N: Number, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize, const ROW: usize>(self, scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, counts: &mut Statistics) {
-                streamed::streamed::<N, $pixel, S, _, MAX_OBJECTS, O, DEPTH, ROW>(scene, sink, counts, scene.$background(), &$nodes { scene });
+            fn walk<N: Number, C: Config<Number = N>>(self, scene: &Prepared<C>, sink: &mut S, counts: &mut Statistics) {
+                streamed::streamed::<N, $pixel, S, _, C>(scene, sink, counts, scene.$background(), &$nodes { scene });
             }
         }
 
@@ -150,8 +131,8 @@ macro_rules! orders {
             type Counts = PassStatistics;
 
             #[inline(always)]
-            fn walk<N: Number, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize, const ROW: usize>(self, scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, counts: &mut PassStatistics) {
-                progressive::progressive::<N, $pixel, S, _, MAX_OBJECTS, O, DEPTH, ROW>(scene, sink, counts, scene.$background(), &$nodes { scene });
+            fn walk<N: Number, C: Config<Number = N>>(self, scene: &Prepared<C>, sink: &mut S, counts: &mut PassStatistics) {
+                progressive::progressive::<N, $pixel, S, _, C>(scene, sink, counts, scene.$background(), &$nodes { scene });
             }
         }
 
@@ -159,8 +140,8 @@ macro_rules! orders {
             type Counts = Statistics;
 
             #[inline(always)]
-            fn walk<N: Number, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize, const ROW: usize>(self, scene: &Scene<N, MAX_OBJECTS, O>, sink: &mut S, counts: &mut Statistics) {
-                progressive::single_pass::<N, $pixel, S, _, MAX_OBJECTS, O, DEPTH, ROW>(scene, sink, counts, self.0, scene.$background(), &$nodes { scene });
+            fn walk<N: Number, C: Config<Number = N>>(self, scene: &Prepared<C>, sink: &mut S, counts: &mut Statistics) {
+                progressive::single_pass::<N, $pixel, S, _, C>(scene, sink, counts, self.0, scene.$background(), &$nodes { scene });
             }
         }
     };
@@ -178,5 +159,4 @@ mod sealed {
     impl Sealed for super::Streamed {}
     impl Sealed for super::Progressive {}
     impl Sealed for super::Pass {}
-    impl<W, const DEPTH: usize, const ROW: usize> Sealed for super::StackSized<W, DEPTH, ROW> {}
 }

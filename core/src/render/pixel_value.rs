@@ -12,7 +12,8 @@ use super::Statistics;
 use crate::camera::PixelPosition;
 use crate::model::PreparedMaterial;
 use crate::number::Number;
-use crate::scene::{Objects, Scene};
+use crate::config::Config;
+use crate::scene::Prepared;
 use crate::light::Lighting;
 
 /// What a traced pixel saw: nothing, or an object's material lit by `lighting`.
@@ -23,16 +24,16 @@ pub enum ShadedPixel<N> {
 }
 
 /// Traces one pixel's primary ray and, for a hit, its shadow ray, and evaluates the lighting.
-pub fn shade_pixel<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
-    scene: &Scene<N, MAX_OBJECTS, O>,
+pub fn shade_pixel<N: Number, C: Config<Number = N>>(
+    scene: &Prepared<C>,
     pixel: PixelPosition,
     statistics: &mut Statistics,
 ) -> ShadedPixel<N> {
     shade_pixel_cached(scene, pixel, statistics, &mut ShadowCache::default(), &[])
 }
 
-fn shade_pixel_cached<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
-    scene: &Scene<N, MAX_OBJECTS, O>,
+fn shade_pixel_cached<N: Number, C: Config<Number = N>>(
+    scene: &Prepared<C>,
     pixel: PixelPosition,
     statistics: &mut Statistics,
     cache: &mut ShadowCache,
@@ -49,8 +50,8 @@ fn shade_pixel_cached<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
 /// memory was a `memcpy` of about 100 bytes, twice a pixel, in a software number type (7 % of
 /// a Cortex-M3 `soft32` frame).
 #[inline(never)]
-pub(crate) fn primary_surface_then<N: Number, R, const MAX_OBJECTS: usize, O: Objects<N>>(
-    scene: &Scene<N, MAX_OBJECTS, O>,
+pub(crate) fn primary_surface_then<N: Number, R, C: Config<Number = N>>(
+    scene: &Prepared<C>,
     pixel: PixelPosition,
     statistics: &mut Statistics,
     cache: &mut ShadowCache,
@@ -72,8 +73,8 @@ pub(crate) fn primary_surface_then<N: Number, R, const MAX_OBJECTS: usize, O: Ob
 /// One pixel: the primary hit's own shade, or, when the ray tree spawns rays from it, the
 /// tree's mix (a tree at most `DEPTH` generations deep).
 #[inline]
-pub(crate) fn pixel_value<N, M, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize>(
-    scene: &Scene<N, MAX_OBJECTS, O>,
+pub(crate) fn pixel_value<N, M, C: Config<Number = N>>(
+    scene: &Prepared<C>,
     mode: &M,
     pixel: PixelPosition,
     statistics: &mut Statistics,
@@ -88,7 +89,7 @@ where
         #[cfg(feature = "ray-tree")]
         if scene.has_ray_tree() {
             let context = TreeContext { scene, colours: mode, pixel, culling };
-            if let Some(mixed) = trace_tree::<N, M, MAX_OBJECTS, O, DEPTH>(&context, *at, mode.local(material, lighting, pixel), statistics, cache) {
+            if let Some(mixed) = trace_tree::<N, M, C>(&context, *at, mode.local(material, lighting, pixel), statistics, cache) {
                 return mode.finish(mixed, pixel);
             }
         }

@@ -12,7 +12,8 @@ use crate::camera::PixelPosition;
 use crate::geometry::{Ray, Vector3};
 use crate::number::Number;
 use crate::optimize::grid::entry_covers;
-use crate::scene::{Object, Objects, Scene};
+use crate::config::{Config, Table};
+use crate::scene::{Object, Prepared};
 use crate::shapes::Interval;
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -35,8 +36,8 @@ fn local_ray<N: Number>(object: &Object<N>, eye: Option<&Vector3<N>>, ray: &Ray<
 }
 
 /// The nearest hit of a primary ray (one from `scene.camera.primary_ray`).
-pub fn nearest_hit<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
-    scene: &Scene<N, MAX_OBJECTS, O>,
+pub fn nearest_hit<N: Number, C: Config<Number = N>>(
+    scene: &Prepared<C>,
     ray: &Ray<N>,
     pixel: PixelPosition,
     statistics: &mut Statistics,
@@ -49,8 +50,8 @@ pub fn nearest_hit<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
 /// result: ties go by object number, and Sortlist's exit only skips objects whose bound lies
 /// beyond the nearest hit. Always inline: out of line, its hit returns through memory.
 #[inline(always)]
-pub fn nearest_hit_cached<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
-    scene: &Scene<N, MAX_OBJECTS, O>,
+pub fn nearest_hit_cached<N: Number, C: Config<Number = N>>(
+    scene: &Prepared<C>,
     ray: &Ray<N>,
     pixel: PixelPosition,
     statistics: &mut Statistics,
@@ -64,7 +65,7 @@ pub fn nearest_hit_cached<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
         // Tested unbounded, before anything else: its result is final, so the loop skips it.
         if let Some(object) = scene.objects.get(index) {
             statistics.ro_tests += 1;
-            if let Some(hit) = object.primitive.intersect(&local_ray(object, scene.eyes.get(index).filter(|_| from_eye), ray), Interval::unbounded()) {
+            if let Some(hit) = object.primitive.intersect(&local_ray(object, scene.eyes.slots().get(index).filter(|_| from_eye), ray), Interval::unbounded()) {
                 statistics.ro_hits += 1;
                 nearest = Some(NearestHit { object: index, t: hit.t, local_normal: hit.normal });
             }
@@ -74,8 +75,8 @@ pub fn nearest_hit_cached<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
     // sites: a call per candidate cost more than the extent checks it makes.
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
-    fn test<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
-        scene: &Scene<N, MAX_OBJECTS, O>,
+    fn test<N: Number, C: Config<Number = N>>(
+        scene: &Prepared<C>,
         ray: &Ray<N>,
         pixel: PixelPosition,
         from_eye: bool,
@@ -103,7 +104,7 @@ pub fn nearest_hit_cached<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
         };
         let Some(object) = scene.objects.get(index) else { return true };
         statistics.ro_tests += 1;
-        if let Some(hit) = object.primitive.intersect(&local_ray(object, scene.eyes.get(index).filter(|_| from_eye), ray), interval) {
+        if let Some(hit) = object.primitive.intersect(&local_ray(object, scene.eyes.slots().get(index).filter(|_| from_eye), ray), interval) {
             statistics.ro_hits += 1;
             *nearest = Some(NearestHit { object: index, t: hit.t, local_normal: hit.normal });
         }

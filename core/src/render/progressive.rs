@@ -33,7 +33,8 @@ use super::shadow_ray::ShadowCulling;
 use super::Statistics;
 use crate::number::Number;
 use crate::pixel::PixelSink;
-use crate::scene::{Objects, Scene};
+use crate::config::Config;
+use crate::scene::Prepared;
 
 /// How many passes a progressive render makes.
 pub const PASSES: usize = 4;
@@ -60,8 +61,8 @@ impl PassStatistics {
 
 /// Every pass in turn, each pass's counts added to `statistics.passes` (the order
 /// `Progressive`): one shadow cache and one set of the light's tables for all of them.
-pub(super) fn progressive<N, P, S, M, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize, const ROW: usize>(
-    scene: &Scene<N, MAX_OBJECTS, O>,
+pub(super) fn progressive<N, P, S, M, C: Config<Number = N>>(
+    scene: &Prepared<C>,
     sink: &mut S,
     statistics: &mut PassStatistics,
     background: P,
@@ -75,14 +76,14 @@ pub(super) fn progressive<N, P, S, M, const MAX_OBJECTS: usize, O: Objects<N>, c
     with_shadow_culling(scene, |culling| {
         let mut cache = ShadowCache::default();
         for (pass, counts) in statistics.passes.iter_mut().enumerate() {
-            trace_pass::<N, P, S, M, MAX_OBJECTS, O, DEPTH, ROW>(scene, sink, counts, pass, &mut cache, culling, background, mode);
+            trace_pass::<N, P, S, M, C>(scene, sink, counts, pass, &mut cache, culling, background, mode);
         }
     })
 }
 
 /// Pass `pass` alone (the order `Pass`), with its own shadow cache and light's tables.
-pub(super) fn single_pass<N, P, S, M, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize, const ROW: usize>(
-    scene: &Scene<N, MAX_OBJECTS, O>,
+pub(super) fn single_pass<N, P, S, M, C: Config<Number = N>>(
+    scene: &Prepared<C>,
     sink: &mut S,
     statistics: &mut Statistics,
     pass: usize,
@@ -95,7 +96,7 @@ pub(super) fn single_pass<N, P, S, M, const MAX_OBJECTS: usize, O: Objects<N>, c
     M: Mode<N, Pixel = P>,
 {
     with_shadow_culling(scene, |culling| {
-        trace_pass::<N, P, S, M, MAX_OBJECTS, O, DEPTH, ROW>(scene, sink, statistics, pass, &mut ShadowCache::default(), culling, background, mode);
+        trace_pass::<N, P, S, M, C>(scene, sink, statistics, pass, &mut ShadowCache::default(), culling, background, mode);
     })
 }
 
@@ -108,8 +109,8 @@ pub fn traced_in_pass(pass: usize, column: u16, row: u16) -> bool {
 }
 
 #[allow(clippy::too_many_arguments)]
-fn trace_pass<N, P, S, M, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize, const ROW: usize>(
-    scene: &Scene<N, MAX_OBJECTS, O>,
+fn trace_pass<N, P, S, M, C: Config<Number = N>>(
+    scene: &Prepared<C>,
     sink: &mut S,
     statistics: &mut Statistics,
     pass: usize,
@@ -128,7 +129,7 @@ fn trace_pass<N, P, S, M, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: 
     #[cfg(feature = "antialias")]
     if let Some(antialias) = scene.antialias {
         if size == 1 {
-            render_antialiased::<N, P, S, M, MAX_OBJECTS, O, DEPTH, ROW>(scene, antialias, sink, statistics, 0..antialias.image.height(), mode, culling);
+            render_antialiased::<N, P, S, M, C>(scene, antialias, sink, statistics, 0..antialias.image.height(), mode, culling);
         }
         return;
     }
@@ -139,7 +140,7 @@ fn trace_pass<N, P, S, M, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: 
     // that pass traced.
     let step = usize::from(size);
     for row in (0..height).step_by(step) {
-        let coverage = if pixelbuffer { Some(RowCoverage::<MAX_OBJECTS>::of(scene, row)) } else { None };
+        let coverage = if pixelbuffer { Some(RowCoverage::<C>::of(scene, row)) } else { None };
         let block_height = size.min(height - row);
         for column in (0..width).step_by(step) {
             if !traced_in_pass(pass, column, row) {
@@ -150,7 +151,7 @@ fn trace_pass<N, P, S, M, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: 
                 background
             } else {
                 let pixel = camera.pixel(column, row);
-                pixel_value::<N, M, MAX_OBJECTS, O, DEPTH>(scene, mode, pixel, statistics, cache, culling).unwrap_or(background)
+                pixel_value::<N, M, C>(scene, mode, pixel, statistics, cache, culling).unwrap_or(background)
             };
             if size == 1 {
                 sink.set_pixel(column, row, value);

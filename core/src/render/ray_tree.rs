@@ -12,8 +12,6 @@
 //! Secondary rays start off the surface by the shadow rays' offset (`shadow_origin`), on the
 //! side they travel into: a reflected ray on the incoming side, a refracted one on the far side.
 
-use heapless::Vec;
-
 use super::direct_lighting::direct_lighting;
 use super::secondary::nearest_secondary_hit;
 use super::shadow_ray::{shadow_origin, ShadowCache, ShadowCulling};
@@ -23,7 +21,8 @@ use crate::camera::PixelPosition;
 use crate::geometry::reflection::{reflected, refracted};
 use crate::geometry::{Ray, Vector3};
 use crate::number::Number;
-use crate::scene::{Objects, Optics, Scene};
+use crate::config::{Config, List};
+use crate::scene::{Optics, Prepared};
 
 /// One node of the tree on the stack.
 #[derive(Clone, Copy, Debug)]
@@ -46,9 +45,9 @@ enum Branch {
 }
 
 /// What the walk needs besides the stack.
-pub(crate) struct TreeContext<'a, 'c, N, C, const MAX_OBJECTS: usize, O> {
-    pub scene: &'a Scene<N, MAX_OBJECTS, O>,
-    pub colours: &'a C,
+pub(crate) struct TreeContext<'a, 'c, N, Colours, C: Config> {
+    pub scene: &'a Prepared<C>,
+    pub colours: &'a Colours,
     pub pixel: PixelPosition,
     pub culling: &'a [ShadowCulling<'c, N>],
 }
@@ -56,16 +55,16 @@ pub(crate) struct TreeContext<'a, 'c, N, C, const MAX_OBJECTS: usize, O> {
 /// The colour of the tree below the primary hit `root` (whose local term is `local`), or
 /// `None` when no secondary ray was spawned (the pixel is then the primary hit alone).
 #[inline(never)]
-pub(crate) fn trace_tree<N: Number, C: NodeColours<N>, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize>(
-    context: &TreeContext<'_, '_, N, C, MAX_OBJECTS, O>,
+pub(crate) fn trace_tree<N: Number, Colours: NodeColours<N>, C: Config<Number = N>>(
+    context: &TreeContext<'_, '_, N, Colours, C>,
     root: SurfacePoint<N>,
     local: [N; 3],
     statistics: &mut Statistics,
     cache: &mut ShadowCache,
 ) -> Option<[N; 3]> {
     let scene = context.scene;
-    let depth = usize::from(scene.depth).min(DEPTH);
-    let mut stack: Vec<Node<N>, DEPTH> = Vec::new();
+    let depth = usize::from(scene.depth).min(C::TREE_DEPTH);
+    let mut stack = C::TreeStack::<Node<N>>::default();
     let root = Node { at: root, optics: scene.optics(root.object), weight: N::ONE, share: N::ONE, colour: local, next: Branch::Reflected };
     if stack.push(root).is_err() {
         return None;
@@ -138,8 +137,8 @@ pub(crate) fn trace_tree<N: Number, C: NodeColours<N>, const MAX_OBJECTS: usize,
 }
 
 /// The surface point a secondary ray hit and its local colour.
-fn surface<N: Number, C: NodeColours<N>, const MAX_OBJECTS: usize, O: Objects<N>>(
-    context: &TreeContext<'_, '_, N, C, MAX_OBJECTS, O>,
+fn surface<N: Number, Colours: NodeColours<N>, C: Config<Number = N>>(
+    context: &TreeContext<'_, '_, N, Colours, C>,
     ray: &Ray<N>,
     object: usize,
     t: N,
@@ -165,7 +164,7 @@ mod tests {
     fn refracted_rays_find_the_far_side<N: Number>() {
         let text = b"sphere\n  scale 20 30 25\n  rotate y 30\n  translate 5 -7 -40\n  transmit 1\n  ior 1.5\n";
         let description = parse::<1>(text).unwrap();
-        let scene = Scene::<N, 1>::prepare(&description).unwrap();
+        let scene = crate::scene::Scene::<N, 1>::prepare(&description).unwrap();
         let object = &scene.objects[0];
         let mut exits = 0;
         for step in 0..400 {

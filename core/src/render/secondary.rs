@@ -8,11 +8,12 @@ use super::primary::NearestHit;
 use super::Statistics;
 use crate::geometry::Ray;
 use crate::number::Number;
-use crate::scene::{Objects, Scene};
+use crate::config::Config;
+use crate::scene::Prepared;
 use crate::shapes::Interval;
 
-pub(crate) fn nearest_secondary_hit<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
-    scene: &Scene<N, MAX_OBJECTS, O>,
+pub(crate) fn nearest_secondary_hit<N: Number, C: Config<Number = N>>(
+    scene: &Prepared<C>,
     ray: &Ray<N>,
     statistics: &mut Statistics,
 ) -> Option<NearestHit<N>> {
@@ -37,7 +38,7 @@ pub(crate) fn nearest_secondary_hit<N: Number, const MAX_OBJECTS: usize, O: Obje
 
 /// [`nearest_secondary_hit`] through the uniform 3-D grid: only the objects of the cells the ray
 /// passes, in the cells' order; ties still go to the earlier object.
-fn nearest_in_grid<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, ray: &Ray<N>, statistics: &mut Statistics) -> Option<NearestHit<N>> {
+fn nearest_in_grid<N: Number, C: Config<Number = N>>(scene: &Prepared<C>, ray: &Ray<N>, statistics: &mut Statistics) -> Option<NearestHit<N>> {
     let mut nearest: Option<NearestHit<N>> = None;
     scene.space_grid.walk(ray, scene.objects.len(), |index| {
         let reach = nearest.map_or(N::MAX, |best| best.t);

@@ -17,7 +17,8 @@ use crate::geometry::{Ray, Vector3};
 use crate::number::Number;
 use crate::optimize::shadow_culling::{BlockerSet, DirectionChord, QuantizedDirection};
 use crate::model::MAX_LIGHTS;
-use crate::scene::{Objects, Scene};
+use crate::config::Config;
+use crate::scene::Prepared;
 #[cfg(test)]
 use crate::light::PreparedLight;
 use crate::shapes::Interval;
@@ -49,8 +50,8 @@ pub struct ShadowCache {
     pub more_blockers: [Option<u16>; MAX_LIGHTS - 1],
 }
 
-pub fn in_shadow<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
-    scene: &Scene<N, MAX_OBJECTS, O>,
+pub fn in_shadow<N: Number, C: Config<Number = N>>(
+    scene: &Prepared<C>,
     shaded_object: usize,
     point: Vector3<N>,
     to_light: Vector3<N>,
@@ -60,8 +61,8 @@ pub fn in_shadow<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
     in_shadow_cached(scene, shaded_object, point, to_light, light_distance, statistics, &mut ShadowCache::default())
 }
 
-pub fn in_shadow_cached<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
-    scene: &Scene<N, MAX_OBJECTS, O>,
+pub fn in_shadow_cached<N: Number, C: Config<Number = N>>(
+    scene: &Prepared<C>,
     shaded_object: usize,
     point: Vector3<N>,
     to_light: Vector3<N>,
@@ -96,8 +97,8 @@ impl<N> Default for ShadowCulling<'_, N> {
 /// [`in_shadow_cached`] with, for a point light, each object's cone of directions from the light
 /// (`ShadowBound::light_cone`, indexed by object; empty: none), checked before its capsule.
 #[allow(clippy::too_many_arguments)]
-pub fn in_shadow_culled<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
-    scene: &Scene<N, MAX_OBJECTS, O>,
+pub fn in_shadow_culled<N: Number, C: Config<Number = N>>(
+    scene: &Prepared<C>,
     shaded_object: usize,
     point: Vector3<N>,
     to_light: Vector3<N>,
@@ -115,8 +116,8 @@ pub fn in_shadow_culled<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
 /// a scene without transparent objects, [`in_shadow_culled`]'s yes or no.
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
-pub(crate) fn light_share<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
-    scene: &Scene<N, MAX_OBJECTS, O>,
+pub(crate) fn light_share<N: Number, C: Config<Number = N>>(
+    scene: &Prepared<C>,
     shaded_object: usize,
     point: Vector3<N>,
     to_light: Vector3<N>,
@@ -135,8 +136,8 @@ pub(crate) fn light_share<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
 /// [`light_share`] with transparent objects: every candidate is tested (an opaque blocker
 /// ends the loop), in object order, so the product is the same whatever the optimizations.
 #[cfg(feature = "ray-tree")]
-fn transmitted<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
-    scene: &Scene<N, MAX_OBJECTS, O>,
+fn transmitted<N: Number, C: Config<Number = N>>(
+    scene: &Prepared<C>,
     shaded_object: usize,
     point: Vector3<N>,
     to_light: Vector3<N>,
@@ -175,8 +176,8 @@ fn transmitted<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
 /// `last_blocker` (the light's shadow cache, tried first and updated).
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
-fn blocked<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
-    scene: &Scene<N, MAX_OBJECTS, O>,
+fn blocked<N: Number, C: Config<Number = N>>(
+    scene: &Prepared<C>,
     shaded_object: usize,
     point: Vector3<N>,
     to_light: Vector3<N>,
@@ -235,8 +236,8 @@ fn blocked<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
 /// multiplications and rejects almost every candidate: forced inline at each site. The capsule
 /// test and the primitive's are out of line.
 #[inline(always)]
-fn candidate_meets<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
-    scene: &Scene<N, MAX_OBJECTS, O>,
+fn candidate_meets<N: Number, C: Config<Number = N>>(
+    scene: &Prepared<C>,
     segment: &ShadowSegment<N>,
     cones: &[DirectionChord<N>],
     (from_light, quantized): (Vector3<N>, QuantizedDirection),
@@ -255,12 +256,12 @@ struct ShadowSegment<N> {
 impl<N: Number> ShadowSegment<N> {
     /// Whether the object's capsule lets the segment through, else whether its primitive does.
     #[inline(never)]
-    fn may_meet_and_meets<const MAX_OBJECTS: usize, O: Objects<N>>(&self, scene: &Scene<N, MAX_OBJECTS, O>, index: usize, statistics: &mut Statistics) -> bool {
+    fn may_meet_and_meets<C: Config<Number = N>>(&self, scene: &Prepared<C>, index: usize, statistics: &mut Statistics) -> bool {
         scene.acceleration.may_shadow(index, self.ray.origin, self.ray.direction, self.interval.max) && self.meets(scene, index, statistics)
     }
 
     /// The shadow test proper (`occluded` in the object's space), counted.
-    fn meets<const MAX_OBJECTS: usize, O: Objects<N>>(&self, scene: &Scene<N, MAX_OBJECTS, O>, index: usize, statistics: &mut Statistics) -> bool {
+    fn meets<C: Config<Number = N>>(&self, scene: &Prepared<C>, index: usize, statistics: &mut Statistics) -> bool {
         let Some(object) = scene.objects.get(index) else { return false };
         statistics.shadow_tests += 1;
         object.primitive.occluded(&object.object_from_world.ray(&self.ray), self.interval)
@@ -277,7 +278,7 @@ mod tests {
     fn coincident_twin_never_shadows<N: Number>() {
         let text = b"light direction 0.3 0.4 1\nshadows on\nsphere\n  scale 6 6 6\n  translate -8 8 0\nsphere\n  scale 6 6 6\n  translate -8 8 0\n";
         let description = parse::<2>(text).unwrap();
-        let scene = Scene::<N, 2>::prepare(&description).unwrap();
+        let scene = crate::scene::Scene::<N, 2>::prepare(&description).unwrap();
         let PreparedLight::Direction(to_light) = scene.light else { unreachable!() };
         let mut shadowed = 0;
         for step in 0..200 {

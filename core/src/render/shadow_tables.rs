@@ -9,7 +9,10 @@ use crate::number::Number;
 use crate::optimize::shadow_culling::{blocker_table, BlockerSet, DirectionChord, LightPosition, LightReach};
 #[cfg(feature = "acceleration-tables")]
 use crate::light::PreparedLight;
-use crate::scene::{Objects, Scene};
+use crate::config::Config;
+#[cfg(feature = "acceleration-tables")]
+use crate::config::Table;
+use crate::scene::Prepared;
 
 /// Runs `body` with the per-render shadow tables, one per light: for a point light each
 /// object's cone of directions from the light, and which objects may shadow which (on the
@@ -18,18 +21,19 @@ use crate::scene::{Objects, Scene};
 /// overlapping pairs (`optimize::shadow_culling::blocker_table`). Without the `acceleration-tables`
 /// feature there are none.
 #[cfg(feature = "acceleration-tables")]
-pub(crate) fn with_shadow_culling<N: Number, R, const MAX_OBJECTS: usize, O: Objects<N>>(
-    scene: &Scene<N, MAX_OBJECTS, O>,
+pub(crate) fn with_shadow_culling<N: Number, R, C: Config<Number = N>>(
+    scene: &Prepared<C>,
     body: impl FnOnce(&[ShadowCulling<'_, N>]) -> R,
 ) -> R {
-    let mut light_cones = [DirectionChord::ALWAYS; MAX_OBJECTS];
-    let mut blockers = [BlockerSet::EMPTY; MAX_OBJECTS];
     let culls = scene.shadows && scene.acceleration.culls_shadows();
-    let count = if culls { scene.objects.len().min(MAX_OBJECTS) } else { 0 };
+    let objects = if culls { scene.objects.len() } else { 0 };
+    let mut light_cones = C::PerObject::<DirectionChord<N>>::filled(objects, DirectionChord::ALWAYS);
+    let mut blockers = C::PerObject::<BlockerSet>::filled(objects, BlockerSet::EMPTY);
+    let count = objects.min(light_cones.slots().len()).min(blockers.slots().len());
     if culls {
-        build_shadow_tables(scene, scene.light, count, &mut light_cones, &mut blockers);
+        build_shadow_tables::<N, C>(scene, scene.light, count, light_cones.slots_mut(), blockers.slots_mut());
     }
-    let first = culling_of(scene.light, count, &light_cones, &blockers);
+    let first = culling_of(scene.light, count, light_cones.slots(), blockers.slots());
     if culls && !scene.more_lights.is_empty() {
         return with_more_lights_culling(scene, count, first, body);
     }
@@ -40,22 +44,22 @@ pub(crate) fn with_shadow_culling<N: Number, R, const MAX_OBJECTS: usize, O: Obj
 /// keeps none of their stack.
 #[cfg(feature = "acceleration-tables")]
 #[inline(never)]
-fn with_more_lights_culling<N: Number, R, const MAX_OBJECTS: usize, O: Objects<N>>(
-    scene: &Scene<N, MAX_OBJECTS, O>,
+fn with_more_lights_culling<N: Number, R, C: Config<Number = N>>(
+    scene: &Prepared<C>,
     count: usize,
     first: ShadowCulling<'_, N>,
     body: impl FnOnce(&[ShadowCulling<'_, N>]) -> R,
 ) -> R {
     const MORE: usize = MAX_LIGHTS - 1;
-    let mut light_cones = [[DirectionChord::ALWAYS; MAX_OBJECTS]; MORE];
-    let mut blockers = [[BlockerSet::EMPTY; MAX_OBJECTS]; MORE];
+    let mut light_cones: [C::PerObject<DirectionChord<N>>; MORE] = core::array::from_fn(|_| C::PerObject::filled(count, DirectionChord::ALWAYS));
+    let mut blockers: [C::PerObject<BlockerSet>; MORE] = core::array::from_fn(|_| C::PerObject::filled(count, BlockerSet::EMPTY));
     for ((source, cones), sets) in scene.more_lights.iter().zip(light_cones.iter_mut()).zip(blockers.iter_mut()) {
-        build_shadow_tables(scene, source.light, count, cones, sets);
+        build_shadow_tables::<N, C>(scene, source.light, count, cones.slots_mut(), sets.slots_mut());
     }
     let mut culling = [ShadowCulling::default(); MAX_LIGHTS];
     culling[0] = first;
     for (((slot, source), cones), sets) in culling.iter_mut().skip(1).zip(scene.more_lights.iter()).zip(light_cones.iter()).zip(blockers.iter()) {
-        *slot = culling_of(source.light, count, cones, sets);
+        *slot = culling_of(source.light, count, cones.slots(), sets.slots());
     }
     body(culling.get(..=scene.more_lights.len()).unwrap_or(&[]))
 }
@@ -71,12 +75,12 @@ fn culling_of<'a, N: Number>(light: PreparedLight<N>, count: usize, light_cones:
 /// object in `f32`) are off the stack before the render's frames are on it.
 #[cfg(feature = "acceleration-tables")]
 #[inline(never)]
-fn build_shadow_tables<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
-    scene: &Scene<N, MAX_OBJECTS, O>,
+fn build_shadow_tables<N: Number, C: Config<Number = N>>(
+    scene: &Prepared<C>,
     light: PreparedLight<N>,
     count: usize,
-    light_cones: &mut [DirectionChord<N>; MAX_OBJECTS],
-    blockers: &mut [BlockerSet; MAX_OBJECTS],
+    light_cones: &mut [DirectionChord<N>],
+    blockers: &mut [BlockerSet],
 ) {
     let light = match light {
         PreparedLight::Point(position) => LightPosition::Point(position),
@@ -84,19 +88,19 @@ fn build_shadow_tables<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
     };
     // Each footprint's chord goes straight to the render's table; only the reaches are kept
     // for the sweep (6 numbers an object).
-    let mut reaches = [LightReach::always(); MAX_OBJECTS];
-    for (index, (cone, reach)) in light_cones.iter_mut().zip(reaches.iter_mut()).enumerate().take(count) {
+    let mut reaches = C::PerObject::<LightReach<N>>::filled(count, LightReach::always());
+    for (index, (cone, reach)) in light_cones.iter_mut().zip(reaches.slots_mut().iter_mut()).enumerate().take(count) {
         let footprint = scene.acceleration.light_footprint(index, light);
         *cone = footprint.chord;
         *reach = footprint.reach;
     }
-    let mut order = [0u16; MAX_OBJECTS];
-    blocker_table(reaches.get(..count).unwrap_or(&[]), &mut order, blockers);
+    let mut order = C::PerObject::<u16>::filled(count, 0);
+    blocker_table(reaches.slots().get(..count).unwrap_or(&[]), order.slots_mut(), blockers);
 }
 
 #[cfg(not(feature = "acceleration-tables"))]
-pub(crate) fn with_shadow_culling<N: Number, R, const MAX_OBJECTS: usize, O: Objects<N>>(
-    _scene: &Scene<N, MAX_OBJECTS, O>,
+pub(crate) fn with_shadow_culling<N: Number, R, C: Config<Number = N>>(
+    _scene: &Prepared<C>,
     body: impl FnOnce(&[ShadowCulling<'_, N>]) -> R,
 ) -> R {
     body(&[])

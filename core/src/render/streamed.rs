@@ -35,11 +35,12 @@ use super::shadow_tables::with_shadow_culling;
 use super::Statistics;
 use crate::number::Number;
 use crate::pixel::PixelSink;
-use crate::scene::{Objects, Scene};
+use crate::config::Config;
+use crate::scene::Prepared;
 
 /// The whole image into a sink that is never read (the order `Streamed`).
-pub(super) fn streamed<N, P, S, M, const MAX_OBJECTS: usize, O: Objects<N>, const DEPTH: usize, const ROW: usize>(
-    scene: &Scene<N, MAX_OBJECTS, O>,
+pub(super) fn streamed<N, P, S, M, C: Config<Number = N>>(
+    scene: &Prepared<C>,
     sink: &mut S,
     statistics: &mut Statistics,
     background: P,
@@ -55,7 +56,7 @@ pub(super) fn streamed<N, P, S, M, const MAX_OBJECTS: usize, O: Objects<N>, cons
     #[cfg(feature = "antialias")]
     if let Some(antialias) = scene.antialias {
         return with_shadow_culling(scene, |culling| {
-            render_antialiased::<N, P, S, M, MAX_OBJECTS, O, DEPTH, ROW>(scene, antialias, sink, statistics, 0..height, mode, culling)
+            render_antialiased::<N, P, S, M, C>(scene, antialias, sink, statistics, 0..height, mode, culling)
         });
     }
     let pixelbuffer = scene.optimizations.pixelbuffer;
@@ -63,13 +64,13 @@ pub(super) fn streamed<N, P, S, M, const MAX_OBJECTS: usize, O: Objects<N>, cons
     with_shadow_culling(scene, |culling| {
         let mut trace = |column: u16, row: u16, statistics: &mut Statistics, sink: &mut S| {
             let pixel = camera.pixel(column, row);
-            let value = pixel_value::<N, M, MAX_OBJECTS, O, DEPTH>(scene, mode, pixel, statistics, &mut cache, culling).unwrap_or(background);
+            let value = pixel_value::<N, M, C>(scene, mode, pixel, statistics, &mut cache, culling).unwrap_or(background);
             sink.set_pixel(column, row, value);
         };
         for row in 0..height {
             statistics.pixels += u64::from(width);
             if pixelbuffer {
-                let mut coverage = RowCoverage::<MAX_OBJECTS>::of(scene, row);
+                let mut coverage = RowCoverage::<C>::of(scene, row);
                 runs(coverage.sorted_spans(), width, |covered, from, to| {
                     if covered {
                         for column in from..to {

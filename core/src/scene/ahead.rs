@@ -15,7 +15,10 @@ use crate::optimize::ObjectBounds;
 use crate::model::{SceneError, SceneErrorKind};
 use crate::model::{Optimizations, MAX_LIGHTS};
 use crate::light::{PreparedLight, PreparedLightSource};
-use crate::scene::{Objects, Optics, PreparedAntialias, Scene};
+use crate::config::Config;
+#[cfg(feature = "ray-tree")]
+use crate::config::List;
+use crate::scene::{Optics, Prepared, PreparedAntialias};
 use crate::model::Palette;
 use crate::shading::ShadingConstants;
 
@@ -42,7 +45,7 @@ pub struct PreparedAhead<'a, N> {
     pub bounds: &'a [ObjectBounds<N>],
 }
 
-impl<N: Number, const MAX_OBJECTS: usize, O: Objects<N>> Scene<N, MAX_OBJECTS, O> {
+impl<N: Number, C: Config<Number = N>> Prepared<C> {
     /// Prepares the scene in place from parts made ahead: copies them, puts the eye into the
     /// space of each of the scene's objects (already prepared ahead too) and builds the acceleration structures from the bounds (per frame: the
     /// work that depends on the view and the light).
@@ -62,10 +65,10 @@ impl<N: Number, const MAX_OBJECTS: usize, O: Objects<N>> Scene<N, MAX_OBJECTS, O
             self.optics.clear();
             self.spheres.clear();
             for optics in parts.optics {
-                self.optics.push(*optics).map_err(|_| too_many(MAX_OBJECTS))?;
+                self.optics.push(*optics).map_err(|_| too_many(C::MAX_OBJECTS))?;
             }
             for sphere in parts.spheres {
-                self.spheres.push(*sphere).map_err(|_| too_many(MAX_OBJECTS))?;
+                self.spheres.push(*sphere).map_err(|_| too_many(C::MAX_OBJECTS))?;
             }
             self.space_grid.build(&self.spheres);
             self.transparent = self.optics.iter().any(|optics| optics.transmit > N::ZERO);
@@ -78,8 +81,8 @@ impl<N: Number, const MAX_OBJECTS: usize, O: Objects<N>> Scene<N, MAX_OBJECTS, O
         self.palette = *parts.palette;
         // The objects are the scene's own (the firmware's in flash, `OBJECTS_AHEAD`): only their
         // eyes are placed, as they depend on the view.
-        if self.objects.len() > MAX_OBJECTS {
-            return Err(too_many(MAX_OBJECTS));
+        if self.objects.len() > C::MAX_OBJECTS {
+            return Err(too_many(C::MAX_OBJECTS));
         }
         self.place_eyes();
         self.acceleration.rebuild_from_bounds(&self.camera, self.optimizations, parts.bounds);
@@ -90,7 +93,7 @@ impl<N: Number, const MAX_OBJECTS: usize, O: Objects<N>> Scene<N, MAX_OBJECTS, O
 /// Writes the Rust source of `scene`'s parts prepared ahead: `OBJECTS_AHEAD`, `BOUNDS_AHEAD`,
 /// `PALETTE_AHEAD` and `AHEAD` (a [`PreparedAhead`]), the number type named `Number` where it
 /// is written (every value bit for bit, by [`Number::write_literal`]).
-pub fn write_prepared_ahead<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, bounds: &[ObjectBounds<N>], out: &mut dyn Write) -> fmt::Result {
+pub fn write_prepared_ahead<N: Number, C: Config<Number = N>>(scene: &Prepared<C>, bounds: &[ObjectBounds<N>], out: &mut dyn Write) -> fmt::Result {
     let count = scene.objects.len();
     writeln!(out, "pub static OBJECTS_AHEAD: [microtrace::scene::Object<Number>; {count}] = [")?;
     for object in scene.objects.iter() {
@@ -205,7 +208,7 @@ pub fn write_prepared_ahead<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(
 }
 
 /// `MORE_LIGHTS_AHEAD`, and `OPTICS_AHEAD` and `SPHERES_AHEAD` (the ray tree's, empty without it).
-fn write_tree_ahead<N: Number, const MAX_OBJECTS: usize, O: Objects<N>>(scene: &Scene<N, MAX_OBJECTS, O>, out: &mut dyn Write) -> fmt::Result {
+fn write_tree_ahead<N: Number, C: Config<Number = N>>(scene: &Prepared<C>, out: &mut dyn Write) -> fmt::Result {
     writeln!(out, "pub static MORE_LIGHTS_AHEAD: [microtrace::light::PreparedLightSource<Number>; {}] = [", scene.more_lights.len())?;
     for source in &scene.more_lights {
         let (kind, position) = match source.light {

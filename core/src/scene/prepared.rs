@@ -5,12 +5,12 @@
 //!
 //! Storage is fixed at compile time: `MAX_OBJECTS` objects, no allocator.
 
+pub use crate::model::{Object, Objects};
 use crate::model::PreparedMaterial;
-use core::ops::Deref;
-
 use heapless::Vec;
 
 use crate::camera::Camera;
+use crate::config::{Arrays, Config, Table};
 use crate::geometry::{AffineTransform, Vector3};
 use crate::light::{PreparedLight, PreparedLightSource};
 use crate::number::Number;
@@ -21,27 +21,9 @@ use crate::optimize::space_grid::SpaceGrid;
 use crate::optimize::{Acceleration, Tuning};
 use crate::model::{SceneError, SceneErrorKind};
 use crate::scene::range::{self, RayOrigins};
-use crate::model::{Antialias, ObjectDescription, Optimizations, Primitive, SceneDescription, Viewport, Window, MAX_LIGHTS};
+use crate::model::{Antialias, ObjectDescription, Optimizations, SceneDescription, Viewport, Window, MAX_LIGHTS};
 use crate::model::{Palette, Rgb4};
 use crate::shading::ShadingConstants;
-
-/// Where a prepared scene's objects live: anything that reads as a slice of them. The host's
-/// scene owns them (`heapless::Vec`, the default, prepared from a description); the firmware's
-/// reads them in flash, where its build put them prepared ahead (`OBJECTS_AHEAD`), so that they
-/// take no RAM: only what depends on the view (each object's eye, [`Scene::eyes`]) is in RAM.
-pub trait Objects<N>: Deref<Target = [Object<N>]> {}
-
-impl<N, T: Deref<Target = [Object<N>]>> Objects<N> for T {}
-
-/// One object as the tracer needs it: the primitive, world -> object, and the material.
-/// The forward transform is not kept: only the inverse is used per ray, and normals go back
-/// through its transpose.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Object<N> {
-    pub primitive: Primitive,
-    pub object_from_world: AffineTransform<N>,
-    pub material: PreparedMaterial<N>,
-}
 
 /// Adaptive antialiasing as the render needs it (thesis fig 2.9): the image's viewport, the
 /// subdivision levels L and the threshold on an 8-bit channel's range over a square's corners.
@@ -91,50 +73,60 @@ pub struct Optics<N> {
     pub ior: N,
 }
 
-#[derive(Debug, Clone)]
-pub struct Scene<N, const MAX_OBJECTS: usize, O = Vec<Object<N>, MAX_OBJECTS>> {
-    pub objects: O,
+/// A scene prepared with the tables its build's [`Config`] gives it (arrays sized at compile
+/// time in [`Arrays`], the firmware's and the tests'; storage sized at run time on a host).
+pub type Scene<N, const MAX_OBJECTS: usize, O = Vec<Object<N>, MAX_OBJECTS>> = Prepared<Arrays<N, MAX_OBJECTS, O>>;
+
+/// The render-ready scene (see the module's comment), its tables the build's `C`.
+pub struct Prepared<C: Config> {
+    pub objects: C::Objects,
     /// A perspective view's eye in each object's space (`object_from_world.point(eye)`, the
     /// same bits as transforming it per ray), indexed like `objects`: every primary ray starts
     /// there, so a ray–object test transforms only the direction. Zero for a parallel view.
     /// It depends on the view, so it is kept apart from the objects (which may be in flash).
-    pub eyes: [Vector3<N>; MAX_OBJECTS],
-    pub camera: Camera<N>,
+    pub eyes: C::PerObject<Vector3<C::Number>>,
+    pub camera: Camera<C::Number>,
     /// The first light (the thesis's only one).
-    pub light: PreparedLight<N>,
+    pub light: PreparedLight<C::Number>,
     /// The first light's intensity; exactly one unless the scene wrote another, and then the
     /// shading multiplies by it.
-    pub light_intensity: N,
+    pub light_intensity: C::Number,
     /// The lights of later `light` statements (chapter 5).
-    pub more_lights: Vec<PreparedLightSource<N>, { MAX_LIGHTS - 1 }>,
+    pub more_lights: Vec<PreparedLightSource<C::Number>, { MAX_LIGHTS - 1 }>,
     /// The ray tree (chapter 5): the objects' optics, indexed like `objects`, empty when no
     /// object reflects or transmits; and the tree's depth (1: primary rays only).
     #[cfg(feature = "ray-tree")]
-    pub optics: Vec<Optics<N>, MAX_OBJECTS>,
+    pub optics: C::PerObjectList<Optics<C::Number>>,
     /// Whether some object's `transmit` is above zero: found once at preparation, asked by
     /// every shadow ray ([`Scene::has_transparent_objects`]).
     #[cfg(feature = "ray-tree")]
     pub transparent: bool,
     /// The objects' world-space spheres for secondary rays, filled with `optics`.
     #[cfg(feature = "ray-tree")]
-    pub spheres: Vec<BoundingSphere<N>, MAX_OBJECTS>,
+    pub spheres: C::PerObjectList<BoundingSphere<C::Number>>,
     /// The uniform 3-D grid over the spheres for secondary rays (none without spheres).
     #[cfg(feature = "ray-tree")]
-    pub space_grid: SpaceGrid<N, MAX_OBJECTS>,
+    pub space_grid: SpaceGrid<C>,
     pub depth: u8,
     /// Adaptive antialiasing (chapter 5, fig 2.9), when on: the camera is then the sample grid.
     pub antialias: Option<PreparedAntialias>,
-    pub constants: ShadingConstants<N>,
+    pub constants: ShadingConstants<C::Number>,
     pub background: u8,
     pub shadows: bool,
     pub dither: bool,
     pub optimizations: Optimizations,
     pub palette: Palette,
     /// What the optimizations derived from the objects' bounding volumes (§4.7).
-    pub acceleration: Acceleration<N, MAX_OBJECTS>,
+    pub acceleration: Acceleration<C>,
 }
 
-impl<N: Number, const MAX_OBJECTS: usize, O> Scene<N, MAX_OBJECTS, O> {
+impl<C: Config> core::fmt::Debug for Prepared<C> {
+    fn fmt(&self, formatter: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        formatter.debug_struct("Prepared").field("objects", &self.objects.len()).field("camera", &self.camera).field("depth", &self.depth).field("optimizations", &self.optimizations).finish_non_exhaustive()
+    }
+}
+
+impl<N: Number + 'static, const MAX_OBJECTS: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize> Prepared<Arrays<N, MAX_OBJECTS, O, POOL, DEPTH, ROW>> {
     /// Every byte zero but the objects' (`objects`; the firmware's, in flash, take none): the
     /// value of a scene to be prepared in place. The firmware keeps its scene in a `static` of
     /// this value (zero-initialised RAM, no flash) and prepares it there: a scene returned by
@@ -176,7 +168,7 @@ impl<N: Number, const MAX_OBJECTS: usize, O> Scene<N, MAX_OBJECTS, O> {
     }
 }
 
-impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
+impl<N: Number + 'static, const MAX_OBJECTS: usize, const POOL: usize, const DEPTH: usize, const ROW: usize> Prepared<Arrays<N, MAX_OBJECTS, Vec<Object<N>, MAX_OBJECTS>, POOL, DEPTH, ROW>> {
     pub fn prepare<const CAPACITY: usize>(description: &SceneDescription<CAPACITY>) -> Result<Self, SceneError> {
         Self::prepare_with_objects(description, &description.objects)
     }
@@ -317,12 +309,12 @@ impl<N: Number, const MAX_OBJECTS: usize> Scene<N, MAX_OBJECTS> {
 }
 
 /// What the render reads of a prepared scene, wherever its objects live.
-impl<N: Number, const MAX_OBJECTS: usize, O: Objects<N>> Scene<N, MAX_OBJECTS, O> {
+impl<N: Number, C: Config<Number = N>> Prepared<C> {
     /// Each object's eye ([`Scene::eyes`]) for the camera's view: per frame, as it depends on
     /// the view.
     pub(crate) fn place_eyes(&mut self) {
         let eye = self.camera.eye();
-        for (slot, object) in self.eyes.iter_mut().zip(self.objects.iter()) {
+        for (slot, object) in self.eyes.slots_mut().iter_mut().zip(self.objects.iter()) {
             *slot = eye.map_or(Vector3::zero(), |eye| object.object_from_world.point(eye));
         }
     }

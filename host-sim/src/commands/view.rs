@@ -129,7 +129,7 @@ struct Finished {
 }
 
 /// Where the Grid's cells start (from `Acceleration::grid_cell`); empty without the Grid.
-fn grid_lines<N: microtrace::number::Number>(acceleration: &microtrace::optimize::Acceleration<N, HOST_MAX_OBJECTS>, width: u16, height: u16) -> ui::overlay::GridLines {
+fn grid_lines<C: microtrace::config::Config>(acceleration: &microtrace::optimize::Acceleration<C>, width: u16, height: u16) -> ui::overlay::GridLines {
     let at = |column, row| microtrace::camera::PixelPosition { column, row, screen_x: 0, screen_y: 0 };
     let columns = (1..width).filter(|&x| acceleration.grid_cell(at(x, 0)).is_some_and(|(_, _, dx, _)| dx == 0)).collect();
     let rows = (1..height).filter(|&y| acceleration.grid_cell(at(0, y)).is_some_and(|(_, _, _, dy)| dy == 0)).collect();

@@ -2,6 +2,7 @@
 
 use super::*;
 use crate::model::Rgb888;
+use crate::scene::Scene;
 use crate::pixel::MockSink;
 use crate::render::{Pass, Pga, Progressive, Rgb, Whole, render};
 use crate::model::{Light, Material, ObjectDescription, Optimizations, Primitive, Projection, SceneDescription, Viewport, Window};

@@ -12,7 +12,9 @@ use std::vec::Vec;
 use super::*;
 use crate::number::{Fixed, Fixed16, SoftFloat};
 use crate::pixel::FrameBuffer;
-use crate::render::{Pga, Rgb, StackSized, Streamed, Whole, render};
+use crate::config::Arrays;
+use crate::render::{Pga, Rgb, Streamed, Whole, render};
+use crate::scene::{Prepared, Scene};
 use crate::model::{Optimizations, SceneDescription};
 
 const WIDTH: u16 = 128;
@@ -164,14 +166,14 @@ fn streamed_equals_the_framebuffer_render_antialiased_and_with_the_ray_tree() {
 fn the_sized_variants_agree() {
     // The firmware's sizes: the polished snooker's tree is 4 deep; a row of 129 corners.
     for (name, text) in [("snooker-polished", SNOOKER_POLISHED), ("lattice-antialiased", LATTICE_ANTIALIASED), ("lattice", LATTICE)] {
-        let scene = Scene::<f32, CAPACITY>::prepare(&description(text)).unwrap();
+        let scene = Prepared::<Arrays<f32, CAPACITY, heapless::Vec<_, CAPACITY>, { crate::config::DEFAULT_GRID_ENTRIES_PER_OBJECT }, 4, 129>>::prepare(&description(text)).unwrap();
         let mut pixels = vec![0u8; PIXELS];
         let mut frame = FrameBuffer::new(&mut pixels, WIDTH, HEIGHT).unwrap();
         let mut expected = Statistics::default();
-        render(&scene, Pga, StackSized::<_, 4, 129>(Whole), &mut frame, &mut expected);
+        render(&scene, Pga, Whole, &mut frame, &mut expected);
         let mut sink = Box::new(Stream::new(0u8));
         let mut statistics = Statistics::default();
-        render(&scene, Pga, StackSized::<_, 4, 129>(Streamed), &mut *sink, &mut statistics);
+        render(&scene, Pga, Streamed, &mut *sink, &mut statistics);
         assert!(sink.pixels.iter().zip(&pixels).all(|(a, b)| a == b), "{name}");
         assert_eq!(statistics, expected, "{name}");
         assert_eq!(sink.broken, 0, "{name}");
@@ -199,7 +201,7 @@ fn rgb_streamed_equals_the_framebuffer_render() {
 
 #[test]
 fn the_runs_merge_overlapping_and_touching_spans_and_fill_the_gaps() {
-    let mut coverage = RowCoverage::<4>::empty();
+    let mut coverage = RowCoverage::<Arrays<f32, 4>>::empty(4);
     // Spans 10..20, 15..25, 25..30 (touching), 40..41, marked out of order.
     for (first, width) in [(15, 10), (10, 10), (40, 1), (25, 5)] {
         coverage.mark_row(first, 0, width, true);

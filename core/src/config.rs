@@ -1,0 +1,172 @@
+//! The build's parameters in one type: the number type, where the objects live, and every
+//! capacity the tracer's tables and stacks are sized by (the objects, the grid's pool, the
+//! ray tree's depth, the antialiasing row). A signature names one generic, `C: Config`, not
+//! eight.
+//!
+//! Stable Rust cannot size an array by a trait's constant in generic code, so the storage is
+//! named by the trait's associated types instead: [`Arrays`] sets them to arrays and
+//! `heapless::Vec`s of capacities in its own const parameters (the firmware's scene, a
+//! `static` sized by its scene; the tests' and the host's), and a host build may set them to
+//! storage sized at run time. The core reads them only as slices ([`Table`]) and lists
+//! ([`List`]), so it never allocates.
+
+use core::fmt::Debug;
+use core::marker::PhantomData;
+use core::ops::{Deref, DerefMut};
+
+use crate::model::{Object, Objects, MAX_DEPTH};
+use crate::number::Number;
+
+/// A table of `T`s: one per object (or a fixed number per object), its length fixed when it
+/// is made.
+pub trait Table<T>: Clone + Sized {
+    /// Every slot.
+    fn slots(&self) -> &[T];
+    /// Every slot, to write.
+    fn slots_mut(&mut self) -> &mut [T];
+    /// A table of `count` slots, each `value`, or of as many as the storage holds (an array
+    /// has its length whatever `count`).
+    fn filled(count: usize, value: T) -> Self;
+}
+
+impl<T: Copy, const K: usize> Table<T> for [T; K] {
+    #[inline(always)]
+    fn slots(&self) -> &[T] {
+        self
+    }
+
+    #[inline(always)]
+    fn slots_mut(&mut self) -> &mut [T] {
+        self
+    }
+
+    #[inline(always)]
+    fn filled(_count: usize, value: T) -> Self {
+        [value; K]
+    }
+}
+
+/// `A` slots for each of `B` objects, read as one slice of `A·B` (the grid's pool).
+impl<T: Copy, const A: usize, const B: usize> Table<T> for [[T; A]; B] {
+    #[inline(always)]
+    fn slots(&self) -> &[T] {
+        self.as_flattened()
+    }
+
+    #[inline(always)]
+    fn slots_mut(&mut self) -> &mut [T] {
+        self.as_flattened_mut()
+    }
+
+    #[inline(always)]
+    fn filled(_count: usize, value: T) -> Self {
+        [[value; A]; B]
+    }
+}
+
+/// A list of at most a capacity of `T`s (`heapless::Vec` in [`Arrays`]).
+pub trait List<T>: Deref<Target = [T]> + DerefMut + Default + Clone {
+    /// Appends `item`, or gives it back when the list is full.
+    fn push(&mut self, item: T) -> Result<(), T>;
+    /// Removes and returns the last item.
+    fn pop(&mut self) -> Option<T>;
+    /// Empties the list.
+    fn clear(&mut self);
+}
+
+impl<T: Clone, const K: usize> List<T> for heapless::Vec<T, K> {
+    #[inline(always)]
+    fn push(&mut self, item: T) -> Result<(), T> {
+        heapless::Vec::push(self, item)
+    }
+
+    #[inline(always)]
+    fn pop(&mut self) -> Option<T> {
+        heapless::Vec::pop(self)
+    }
+
+    #[inline(always)]
+    fn clear(&mut self) {
+        heapless::Vec::clear(self)
+    }
+}
+
+/// The build's number type, object storage and capacities.
+pub trait Config: 'static {
+    /// The number type the tracer computes in.
+    type Number: Number + 'static;
+    /// Where the prepared objects live (the scene's own list, or the firmware's in flash).
+    type Objects: Objects<Self::Number>;
+    /// One `T` per object.
+    type PerObject<T: Copy>: Table<T>;
+    /// At most one `T` per object.
+    type PerObjectList<T: Clone>: List<T>;
+    /// The screen grid's pool: [`Config::GRID_ENTRIES_PER_OBJECT`] `T`s per object.
+    type GridPool<T: Copy>: Table<T>;
+    /// The secondary rays' space grid's entries: `ENTRIES_PER_OBJECT` per object.
+    type SpaceEntries: Table<u16>;
+    /// The ray tree's stack of nodes: at most [`Config::TREE_DEPTH`].
+    type TreeStack<T: Clone>: List<T>;
+    /// One row of antialiasing corners ([`Config::ANTIALIAS_ROW`] of them).
+    type CornerRow: Table<[u8; 3]>;
+    /// The most objects the tables hold.
+    const MAX_OBJECTS: usize;
+    /// The grid's pool entries per object (zero: no grid).
+    const GRID_ENTRIES_PER_OBJECT: usize;
+    /// The deepest ray tree the render follows (a scene's deeper `depth` is cut here).
+    const TREE_DEPTH: usize;
+    /// The antialiasing corners kept of a row (the image's width plus one shares every
+    /// corner; fewer traces some twice).
+    const ANTIALIAS_ROW: usize;
+}
+
+/// The grid's pool entries per object by default: an object may overlap this many cells on
+/// average (24); none without the `acceleration-tables` feature (no grid).
+pub const DEFAULT_GRID_ENTRIES_PER_OBJECT: usize = if cfg!(feature = "acceleration-tables") { 24 } else { 0 };
+
+/// The ray tree's depth by default: the format's deepest.
+pub const DEFAULT_TREE_DEPTH: usize = MAX_DEPTH as usize;
+
+/// The antialiasing row by default: an image up to 2,048 pixels wide shares every corner (6 KB
+/// of stack); a wider one traces the corners beyond again.
+pub const DEFAULT_ANTIALIAS_ROW: usize = 2049;
+
+/// Every table an array of a capacity fixed at compile time: `K` objects (kept in `O`),
+/// `POOL` grid entries per object, a ray tree `DEPTH` deep and antialiasing rows of `ROW`
+/// corners. The firmware's scene is one (sized by its scene), and so are the tests'.
+pub struct Arrays<
+    N,
+    const K: usize,
+    O = heapless::Vec<Object<N>, K>,
+    const POOL: usize = DEFAULT_GRID_ENTRIES_PER_OBJECT,
+    const DEPTH: usize = DEFAULT_TREE_DEPTH,
+    const ROW: usize = DEFAULT_ANTIALIAS_ROW,
+>(PhantomData<(N, O)>);
+
+impl<N, const K: usize, O, const POOL: usize, const DEPTH: usize, const ROW: usize> Debug for Arrays<N, K, O, POOL, DEPTH, ROW> {
+    fn fmt(&self, formatter: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        write!(formatter, "Arrays<{K} objects, {POOL} grid entries each, depth {DEPTH}, row {ROW}>")
+    }
+}
+
+impl<N, const K: usize, O, const POOL: usize, const DEPTH: usize, const ROW: usize> Config for Arrays<N, K, O, POOL, DEPTH, ROW>
+where
+    N: Number + 'static,
+    O: Objects<N> + 'static,
+{
+    type Number = N;
+    type Objects = O;
+    type PerObject<T: Copy> = [T; K];
+    type PerObjectList<T: Clone> = heapless::Vec<T, K>;
+    type GridPool<T: Copy> = [[T; POOL]; K];
+    type SpaceEntries = [[u16; SPACE_ENTRIES_PER_OBJECT]; K];
+    type TreeStack<T: Clone> = heapless::Vec<T, DEPTH>;
+    type CornerRow = [[u8; 3]; ROW];
+    const MAX_OBJECTS: usize = K;
+    const GRID_ENTRIES_PER_OBJECT: usize = POOL;
+    const TREE_DEPTH: usize = DEPTH;
+    const ANTIALIAS_ROW: usize = ROW;
+}
+
+/// The space grid's cell entries per object on average at most (else no grid).
+pub const SPACE_ENTRIES_PER_OBJECT: usize = 8;
