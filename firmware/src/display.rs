@@ -1,6 +1,6 @@
 //! Where the render's palette indices go: row by row to the host (`framebuffer.bin`) and, on
 //! boards with one, to the display, each row as soon as it is finished. No framebuffer: the
-//! streamed render (`microtrace::render::render` in the order `StackSized(Streamed)`) writes each row once and
+//! streamed render (`microtrace::render::render` in the order `Streamed`) writes each row once and
 //! never reads it back, so one row of palette indices is all the firmware keeps (on the stack,
 //! `StreamedRows`). With the `framebuffer` feature (the framebuffer render, which Pixelbuffer
 //! reads back) or `progressive` (whose passes write each row four times), the picture is kept in

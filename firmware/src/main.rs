@@ -56,7 +56,7 @@ type PreparedScene = Prepared<Arrays<scene::Number, { scene::OBJECT_COUNT }, Fla
 struct FlashObjects;
 
 impl core::ops::Deref for FlashObjects {
-    type Target = [microtrace::scene::Object<scene::Number>];
+    type Target = [microtrace::model::Object<scene::Number>];
 
     fn deref(&self) -> &Self::Target {
         &scene::OBJECTS_AHEAD

@@ -13,7 +13,8 @@ use crate::geometry::{Ray, Vector3};
 use crate::number::Number;
 use crate::optimize::grid::entry_covers;
 use crate::config::{Config, Table};
-use crate::scene::{Object, Prepared};
+use crate::model::Object;
+use crate::scene::Prepared;
 use crate::shapes::Interval;
 
 #[derive(Clone, Copy, Debug, PartialEq)]

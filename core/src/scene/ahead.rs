@@ -95,10 +95,10 @@ impl<N: Number, C: Config<Number = N>> Prepared<C> {
 /// is written (every value bit for bit, by [`Number::write_literal`]).
 pub fn write_prepared_ahead<N: Number, C: Config<Number = N>>(scene: &Prepared<C>, bounds: &[ObjectBounds<N>], out: &mut dyn Write) -> fmt::Result {
     let count = scene.objects.len();
-    writeln!(out, "pub static OBJECTS_AHEAD: [microtrace::scene::Object<Number>; {count}] = [")?;
+    writeln!(out, "pub static OBJECTS_AHEAD: [microtrace::model::Object<Number>; {count}] = [")?;
     for object in scene.objects.iter() {
         let columns = object.object_from_world.columns();
-        write!(out, "    microtrace::scene::Object {{ primitive: microtrace::model::Primitive::{:?}, object_from_world: microtrace::geometry::AffineTransform::from_parts([", object.primitive)?;
+        write!(out, "    microtrace::model::Object {{ primitive: microtrace::model::Primitive::{:?}, object_from_world: microtrace::geometry::AffineTransform::from_parts([", object.primitive)?;
         for column in columns {
             numbers(out, &column)?;
             write!(out, ", ")?;

@@ -3,10 +3,9 @@
 //! per scene is done here (the thesis's `preprocess`, §4.7 and RTRACE.C), so the per-pixel code
 //! only reads.
 //!
-//! Storage is fixed at compile time: `MAX_OBJECTS` objects, no allocator.
+//! Storage is the build's [`Config`]'s: with [`Arrays`], fixed at compile time; no allocator.
 
-pub use crate::model::{Object, Objects};
-use crate::model::PreparedMaterial;
+use crate::model::{Object, Objects, PreparedMaterial};
 use heapless::Vec;
 
 use crate::camera::Camera;
