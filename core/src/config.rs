@@ -14,7 +14,7 @@ use core::fmt::Debug;
 use core::marker::PhantomData;
 use core::ops::{Deref, DerefMut};
 
-use crate::model::{Object, Objects, MAX_DEPTH};
+use crate::model::{Object, Objects, MAX_DEPTH, MAX_LIGHTS};
 use crate::number::Number;
 
 /// A table of `T`s: one per object (or a fixed number per object), its length fixed when it
@@ -99,6 +99,9 @@ pub trait Config: 'static {
     type Objects: Objects<Self::Number>;
     /// One `T` per object.
     type PerObject<T: Copy>: Table<T>;
+    /// One `T` per object for each light after the first ([`MAX_LIGHTS`]` − 1` tables of
+    /// one per object, one after the other): the per-render shadow tables of the other lights.
+    type PerObjectPerOtherLight<T: Copy>: Table<T>;
     /// At most one `T` per object.
     type PerObjectList<T: Clone>: List<T>;
     /// The screen grid's pool: [`Config::GRID_ENTRIES_PER_OBJECT`] `T`s per object.
@@ -157,6 +160,7 @@ where
     type Number = N;
     type Objects = O;
     type PerObject<T: Copy> = [T; K];
+    type PerObjectPerOtherLight<T: Copy> = [[T; K]; MAX_LIGHTS - 1];
     type PerObjectList<T: Clone> = heapless::Vec<T, K>;
     type GridPool<T: Copy> = [[T; POOL]; K];
     type SpaceEntries = [[u16; SPACE_ENTRIES_PER_OBJECT]; K];

@@ -217,7 +217,7 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
         if optimizations.sortlist {
             let near = self.near.slots();
             if let Some(order) = self.order.slots_mut().get_mut(..count) {
-                sortlist::sort_by_bound(order, |i| near.get(i).copied().unwrap_or(-N::MAX));
+                sortlist::sort_by_bound::<C, _>(order, |i| near.get(i).copied().unwrap_or(-N::MAX));
             }
         }
         if !optimizations.grid {

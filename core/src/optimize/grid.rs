@@ -23,6 +23,7 @@ use crate::model::Objects;
 use crate::number::Number;
 use super::pixelbuffer::band_span;
 use super::projection::{Projected, Screen};
+use super::sortlist::{heapsort, INSERTION_SORT_BELOW};
 
 /// Cells across and down (`GRIDCOL`, `GRIDROW`).
 pub const GRID_SIZE: u16 = 20;
@@ -275,13 +276,17 @@ impl<N: Number, C: Config<Number = N>> Grid<C> {
                 places.swap(index, target);
             }
         }
-        // Sort each cell by its entries' bounds (stable: insertion sort).
+        // Sort each cell by its entries' bounds, ties in test order (the order they are in).
         if depth.is_some() {
             for span in grid.starts.windows(2) {
                 let &[start, end] = span else { continue };
                 let range = usize::from(start)..usize::from(end);
-                let (Some(bounds), Some(pool)) = (bounds.get_mut(range.clone()), pool.get_mut(range)) else { continue };
-                sort_cell(bounds, pool);
+                let (Some(bounds), Some(pool), Some(places)) = (bounds.get_mut(range.clone()), pool.get_mut(range.clone()), places.get_mut(range)) else { continue };
+                if C::MAX_OBJECTS < INSERTION_SORT_BELOW || bounds.len() < INSERTION_SORT_BELOW {
+                    sort_cell(bounds, pool);
+                } else {
+                    sort_large_cell(bounds, pool, places);
+                }
             }
         }
         grid.cells = Some(CellSize { width: cell_width, height: cell_height });
@@ -338,9 +343,66 @@ fn sort_cell<N: Number>(bounds: &mut [N], pool: &mut [Entry]) {
     }
 }
 
+/// [`sort_cell`] for a cell of many entries (a scene of thousands of objects): a heapsort, ties
+/// broken by each entry's position before the sort (noted in `places`), so that the result is
+/// the stable sort's.
+#[allow(clippy::neg_cmp_op_on_partial_ord, reason = "`!(b < a)`: equal, or unordered (a NaN), then by position")]
+fn sort_large_cell<N: Number>(bounds: &mut [N], pool: &mut [Entry], places: &mut [u16]) {
+    for (position, place) in places.iter_mut().enumerate() {
+        *place = position as u16;
+    }
+    let len = bounds.len().min(pool.len()).min(places.len());
+    let mut cell = (bounds, pool, places);
+    let key = |cell: &(&mut [N], &mut [Entry], &mut [u16]), at: usize| Some((*cell.0.get(at)?, *cell.2.get(at)?));
+    heapsort(
+        &mut cell,
+        len,
+        |cell, i, j| match (key(cell, i), key(cell, j)) {
+            (Some(a), Some(b)) => a.0 < b.0 || (!(b.0 < a.0) && a.1 < b.1),
+            _ => false,
+        },
+        |cell, i, j| {
+            if i < len && j < len && len <= cell.0.len() && len <= cell.1.len() && len <= cell.2.len() {
+                cell.0.swap(i, j);
+                cell.1.swap(i, j);
+                cell.2.swap(i, j);
+            }
+        },
+    );
+}
+
 /// Whether a pixel at offsets (dx, dy) in the cell may be covered by the entry's object.
 #[inline]
 pub fn entry_covers(entry: &Entry, dx: u16, dy: u16) -> bool {
     let inside = |packed: u16, offset: u16| offset >= (packed & 0xFF) && offset <= (packed >> 8);
     inside(entry[1], dx) && inside(entry[2], dy)
+}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use std::vec::Vec;
+
+    use super::{sort_cell, sort_large_cell, Entry};
+
+    /// The heapsort of a large cell gives the insertion sort's order, ties included.
+    #[test]
+    fn a_large_cell_sorts_as_a_small_one() {
+        let mut state = 7u32;
+        for count in [0usize, 1, 64, 65, 700] {
+            let bounds: Vec<f32> = (0..count)
+                .map(|_| {
+                    state = state.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+                    (state >> 28) as f32
+                })
+                .collect();
+            let pool: Vec<Entry> = (0..count as u16).map(|object| [object, 0, 0]).collect();
+            let (mut small, mut small_pool) = (bounds.clone(), pool.clone());
+            sort_cell(&mut small, &mut small_pool);
+            let (mut large, mut large_pool, mut places) = (bounds, pool, std::vec![0u16; count]);
+            sort_large_cell(&mut large, &mut large_pool, &mut places);
+            assert_eq!(large, small);
+            assert_eq!(large_pool, small_pool, "{count} entries");
+        }
+    }
 }

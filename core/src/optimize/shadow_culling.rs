@@ -14,6 +14,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 use crate::geometry::Vector3;
+use crate::config::Config;
 use crate::number::Number;
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -414,7 +415,7 @@ impl BlockerSet {
 /// (`order` is scratch space, one entry per object): the footprints sorted by their boxes' low
 /// x, each compared only with those whose x range overlaps its own, so the work grows with the
 /// objects and the overlapping pairs, not with all pairs.
-pub fn blocker_table<N: Number>(footprints: &[LightReach<N>], order: &mut [u16], blockers: &mut [BlockerSet]) {
+pub fn blocker_table<C: Config<Number = N>, N: Number>(footprints: &[LightReach<N>], order: &mut [u16], blockers: &mut [BlockerSet]) {
     let count = footprints.len().min(order.len()).min(blockers.len()).min(usize::from(u16::MAX));
     let (order, blockers) = (&mut order[..count], &mut blockers[..count]);
     blockers.fill(BlockerSet::EMPTY);
@@ -422,7 +423,7 @@ pub fn blocker_table<N: Number>(footprints: &[LightReach<N>], order: &mut [u16],
         *place = index as u16;
     }
     let low_x = |index: u16| footprints.get(usize::from(index)).map_or(-N::MAX, |f| f.low(0));
-    super::sortlist::sort_by_bound(order, |index| low_x(index as u16));
+    super::sortlist::sort_by_bound::<C, _>(order, |index| low_x(index as u16));
     for (position, &first) in order.iter().enumerate() {
         let Some(a) = footprints.get(usize::from(first)) else { continue };
         for &second in order.iter().skip(position + 1) {
@@ -453,6 +454,7 @@ pub fn blocker_table<N: Number>(footprints: &[LightReach<N>], order: &mut [u16],
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::config::Arrays;
 
     /// A small linear congruential generator: the same spheres every run.
     struct Random(u64);
@@ -496,7 +498,7 @@ mod tests {
             let light = if scene % 2 == 0 { LightPosition::Point(Vector3::from_f64(point)) } else { LightPosition::Direction(Vector3::from_f64(toward)) };
             let footprints = bounds.map(|bound| bound.footprint(light).reach);
             let (mut order, mut table) = ([0u16; 12], [BlockerSet::EMPTY; 12]);
-            blocker_table(&footprints, &mut order, &mut table);
+            blocker_table::<Arrays<N, 12>, N>(&footprints, &mut order, &mut table);
             for receiver in 0..count {
                 let (centre, radius) = spheres[receiver];
                 for blocker in (0..count).filter(|b| *b != receiver) {
@@ -560,7 +562,7 @@ mod tests {
             let light = [random.between(-60.0, 60.0), random.between(40.0, 90.0), random.between(-60.0, 60.0)];
             let footprints = bounds.map(|bound| bound.footprint(LightPosition::Point(Vector3::from_f64(light))));
             let (mut order, mut table) = ([0u16; 8], [BlockerSet::EMPTY; 8]);
-            blocker_table(&footprints.map(|footprint| footprint.reach), &mut order, &mut table);
+            blocker_table::<Arrays<N, 8>, N>(&footprints.map(|footprint| footprint.reach), &mut order, &mut table);
             for receiver in 0..8 {
                 let (start, end, radius) = rods[receiver];
                 for blocker in (0..8).filter(|b| *b != receiver) {

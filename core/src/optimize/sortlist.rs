@@ -18,6 +18,7 @@
 
 use super::bounding_volume::{dot, largest_semi_axis, ObjectGeometry, View};
 use super::projection::Screen;
+use crate::config::Config;
 
 /// The lower bound of `t` for one object (already lowered by the rounding margin); `None` when
 /// no bound is known (the object is then tested first and never ends the loop).
@@ -78,15 +79,65 @@ pub fn far_depth_bound(screen: &Screen, geometry: &ObjectGeometry) -> Option<f64
     bound.is_finite().then_some(bound)
 }
 
-/// Sorts `order` (object numbers) by `bound`, ties by object number (insertion sort: stable,
-/// no allocation, n² only at preprocess).
-pub fn sort_by_bound<T: PartialOrd + Copy>(order: &mut [u16], bound: impl Fn(usize) -> T) {
-    for i in 1..order.len() {
-        let mut j = i;
-        while j > 0 && bound(usize::from(order[j])) < bound(usize::from(order[j - 1])) {
-            order.swap(j, j - 1);
-            j -= 1;
+/// Below this many items a sort is an insertion sort (few comparisons on the short, nearly
+/// sorted lists of the thesis's scenes); from it on, a heapsort (n·log n for Haines' 10,000).
+pub const INSERTION_SORT_BELOW: usize = 64;
+
+/// Sorts `order` (object numbers, each at most once) by `bound`, ties by object number:
+/// from the identity order, the same order as a stable sort. Items whose bound is NaN keep no
+/// particular place. No allocation. A build whose `C` holds fewer objects than the heapsort
+/// needs links only the insertion sort.
+pub fn sort_by_bound<C: Config, T: PartialOrd + Copy>(order: &mut [u16], bound: impl Fn(usize) -> T) {
+    if C::MAX_OBJECTS < INSERTION_SORT_BELOW || order.len() < INSERTION_SORT_BELOW {
+        for i in 1..order.len() {
+            let mut j = i;
+            while j > 0 && bound(usize::from(order[j])) < bound(usize::from(order[j - 1])) {
+                order.swap(j, j - 1);
+                j -= 1;
+            }
         }
+        return;
+    }
+    let key = |order: &[u16], at: usize| {
+        let object = order.get(at).copied().unwrap_or(u16::MAX);
+        (bound(usize::from(object)), object)
+    };
+    #[allow(clippy::neg_cmp_op_on_partial_ord, reason = "`!(b < a)`: equal, or unordered (a NaN), then by object number")]
+    let before = |a: (T, u16), b: (T, u16)| a.0 < b.0 || (!(b.0 < a.0) && a.1 < b.1);
+    let len = order.len();
+    heapsort(order, len, |order, i, j| before(key(order, i), key(order, j)), |order, i, j| {
+        if i < order.len() && j < order.len() {
+            order.swap(i, j);
+        }
+    });
+}
+
+/// Heapsort of the first `len` items of `items`, reached by position: `less(items, i, j)`
+/// compares the items now at `i` and `j`, `swap(items, i, j)` exchanges them. In place, n·log n
+/// comparisons, no recursion. Not stable: `less` breaks ties itself where the order of equal
+/// items matters.
+pub fn heapsort<S: ?Sized>(items: &mut S, len: usize, less: impl Fn(&S, usize, usize) -> bool, swap: impl Fn(&mut S, usize, usize)) {
+    // Sift the item at `root` down the heap of the first `end` items.
+    let sift = |items: &mut S, mut root: usize, end: usize| loop {
+        let mut child = 2 * root + 1;
+        if child >= end {
+            break;
+        }
+        if child + 1 < end && less(items, child, child + 1) {
+            child += 1;
+        }
+        if !less(items, root, child) {
+            break;
+        }
+        swap(items, root, child);
+        root = child;
+    };
+    for root in (0..len / 2).rev() {
+        sift(items, root, len);
+    }
+    for end in (1..len).rev() {
+        swap(items, 0, end);
+        sift(items, 0, end);
     }
 }
 
@@ -199,5 +250,51 @@ fn within(value: f64, low: f64, high: f64) -> f64 {
         high
     } else {
         value
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use std::vec::Vec;
+
+    use super::{heapsort, sort_by_bound, INSERTION_SORT_BELOW};
+
+    /// A small linear congruential generator: the same numbers on every machine.
+    fn numbers(seed: u64, count: usize) -> Vec<u64> {
+        let mut state = seed;
+        (0..count)
+            .map(|_| {
+                state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+                state >> 33
+            })
+            .collect()
+    }
+
+    /// Both sides of the switch to the heapsort, bounds with many ties: the order equals a
+    /// stable sort of the identity by bound, as the insertion sort's did.
+    #[test]
+    fn sorting_by_bound_equals_a_stable_sort_ties_by_object_number() {
+        for (seed, count) in [(1, 0), (2, 1), (3, 7), (4, INSERTION_SORT_BELOW - 1), (5, INSERTION_SORT_BELOW), (6, 300), (7, 5_000)] {
+            for distinct in [3, 1_000_000] {
+                let bounds: Vec<f64> = numbers(seed, count).iter().map(|n| (n % distinct) as f64 - 2.0).collect();
+                let mut order: Vec<u16> = (0..count as u16).collect();
+                sort_by_bound::<crate::config::Arrays<f64, 5_000>, _>(&mut order, |index| bounds[index]);
+                let mut expected: Vec<u16> = (0..count as u16).collect();
+                expected.sort_by(|a, b| bounds[usize::from(*a)].total_cmp(&bounds[usize::from(*b)]));
+                assert_eq!(order, expected, "{count} bounds, {distinct} distinct");
+            }
+        }
+    }
+
+    #[test]
+    fn heapsort_sorts_and_keeps_every_item() {
+        for (seed, count) in [(11, 0), (12, 1), (13, 2), (14, 100), (15, 1_001)] {
+            let mut items = numbers(seed, count);
+            let mut expected = items.clone();
+            expected.sort_unstable();
+            heapsort(&mut items[..], count, |items: &[u64], i, j| items[i] < items[j], |items: &mut [u64], i, j| items.swap(i, j));
+            assert_eq!(items, expected);
+        }
     }
 }

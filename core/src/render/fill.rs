@@ -7,6 +7,7 @@ use crate::number::Number;
 use crate::optimize::bounding_volume::ObjectGeometry;
 use crate::optimize::extents::Extent;
 use crate::optimize::pixelbuffer::hull_span;
+use crate::optimize::sortlist::{heapsort, INSERTION_SORT_BELOW};
 use crate::optimize::projection::Projected;
 use crate::pixel::PixelSink;
 use crate::config::{Config, Table};
@@ -135,7 +136,8 @@ impl<C: Config> RowCoverage<C> {
         self.overflowed || self.spans.slots().iter().take(self.count).any(|&(first, width)| column >= first && column - first < width)
     }
 
-    /// The spans sorted by their first column (an insertion sort: a row has a few), or `None`
+    /// The spans sorted by their first column (an insertion sort when a row has a few, else a
+    /// heapsort), or `None`
     /// when there were more than the coverage holds and the whole row counts as covered. For the
     /// streamed render (`super::streamed`), which walks them once a row instead of testing each
     /// pixel against every span.
@@ -144,6 +146,16 @@ impl<C: Config> RowCoverage<C> {
             return None;
         }
         let spans = self.spans.slots_mut().get_mut(..self.count)?;
+        if C::MAX_OBJECTS >= INSERTION_SORT_BELOW && spans.len() >= INSERTION_SORT_BELOW {
+            // Equal starts may come in any order: `runs` merges them alike.
+            let len = spans.len();
+            heapsort(spans, len, |spans: &[(u16, u16)], i, j| matches!((spans.get(i), spans.get(j)), (Some(a), Some(b)) if a.0 < b.0), |spans: &mut [(u16, u16)], i, j| {
+                if i < spans.len() && j < spans.len() {
+                    spans.swap(i, j);
+                }
+            });
+            return Some(spans);
+        }
         for next in 1..spans.len() {
             let Some(&moving) = spans.get(next) else { break };
             let mut slot = next;

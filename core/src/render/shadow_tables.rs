@@ -51,15 +51,20 @@ fn with_more_lights_culling<N: Number, R, C: Config<Number = N>>(
     body: impl FnOnce(&[ShadowCulling<'_, N>]) -> R,
 ) -> R {
     const MORE: usize = MAX_LIGHTS - 1;
-    let mut light_cones: [C::PerObject<DirectionChord<N>>; MORE] = core::array::from_fn(|_| C::PerObject::filled(count, DirectionChord::ALWAYS));
-    let mut blockers: [C::PerObject<BlockerSet>; MORE] = core::array::from_fn(|_| C::PerObject::filled(count, BlockerSet::EMPTY));
-    for ((source, cones), sets) in scene.more_lights.iter().zip(light_cones.iter_mut()).zip(blockers.iter_mut()) {
-        build_shadow_tables::<N, C>(scene, source.light, count, cones.slots_mut(), sets.slots_mut());
+    // One table of each light after the first, one after the other.
+    let mut light_cones = C::PerObjectPerOtherLight::<DirectionChord<N>>::filled(count.saturating_mul(MORE), DirectionChord::ALWAYS);
+    let mut blockers = C::PerObjectPerOtherLight::<BlockerSet>::filled(count.saturating_mul(MORE), BlockerSet::EMPTY);
+    let per_light = light_cones.slots().len().min(blockers.slots().len()) / MORE;
+    if per_light == 0 {
+        return body(&[first]);
+    }
+    for ((source, cones), sets) in scene.more_lights.iter().zip(light_cones.slots_mut().chunks_mut(per_light)).zip(blockers.slots_mut().chunks_mut(per_light)) {
+        build_shadow_tables::<N, C>(scene, source.light, count, cones, sets);
     }
     let mut culling = [ShadowCulling::default(); MAX_LIGHTS];
     culling[0] = first;
-    for (((slot, source), cones), sets) in culling.iter_mut().skip(1).zip(scene.more_lights.iter()).zip(light_cones.iter()).zip(blockers.iter()) {
-        *slot = culling_of(source.light, count, cones.slots(), sets.slots());
+    for (((slot, source), cones), sets) in culling.iter_mut().skip(1).zip(scene.more_lights.iter()).zip(light_cones.slots().chunks(per_light)).zip(blockers.slots().chunks(per_light)) {
+        *slot = culling_of(source.light, count, cones, sets);
     }
     body(culling.get(..=scene.more_lights.len()).unwrap_or(&[]))
 }
@@ -95,7 +100,7 @@ fn build_shadow_tables<N: Number, C: Config<Number = N>>(
         *reach = footprint.reach;
     }
     let mut order = C::PerObject::<u16>::filled(count, 0);
-    blocker_table(reaches.slots().get(..count).unwrap_or(&[]), order.slots_mut(), blockers);
+    blocker_table::<C, N>(reaches.slots().get(..count).unwrap_or(&[]), order.slots_mut(), blockers);
 }
 
 #[cfg(not(feature = "acceleration-tables"))]

@@ -16,7 +16,8 @@ use microtrace::optimize::bounding_volume::ObjectGeometry;
 use microtrace::optimize::bounding_volume::View;
 use microtrace::optimize::projection::Polygon;
 use microtrace::optimize::{sortlist, window_corners};
-use microtrace::scene::Scene;
+use microtrace::config::Config;
+use microtrace::scene::Prepared;
 
 use super::colours::object_colour;
 
@@ -57,7 +58,7 @@ pub struct PlanView {
 impl PlanView {
     /// The plan of a prepared scene, from the geometry the tracer renders (as the core's fill
     /// and extents take it).
-    pub fn of<N: Number, const MAX_OBJECTS: usize>(scene: &Scene<N, MAX_OBJECTS>) -> Self {
+    pub fn of<N: Number, C: Config<Number = N>>(scene: &Prepared<C>) -> Self {
         let screen = scene.acceleration.screen();
         let corners = window_corners(screen, &scene.camera);
         let objects: Vec<PlanObject> = scene
@@ -82,7 +83,7 @@ impl PlanView {
         } else {
             let mut order: Vec<u16> = (0..objects.len() as u16).collect();
             let near = |index: usize| objects[index].depth.map_or(f64::NEG_INFINITY, |(near, _)| near);
-            sortlist::sort_by_bound(&mut order, near);
+            sortlist::sort_by_bound::<C, _>(&mut order, near);
             order
         };
         let rays = match screen.view {
