@@ -9,7 +9,7 @@ use crate::model::{Object, Objects, PreparedMaterial};
 use heapless::Vec;
 
 use crate::camera::Camera;
-use crate::config::{Arrays, Config, Table};
+use crate::config::{Arrays, Config, List, Table};
 use crate::geometry::{AffineTransform, Vector3};
 use crate::light::{PreparedLight, PreparedLightSource};
 use crate::number::Number;
@@ -186,7 +186,13 @@ impl<N: Number + 'static, const MAX_OBJECTS: usize, const POOL: usize, const DEP
     /// Every byte zero, no objects: the value of a scene to be prepared in place
     /// ([`Scene::unprepared`] with no objects).
     pub const UNPREPARED: Self = Self::unprepared(Vec::new());
+}
 
+/// Preparation from a description, for a scene that owns its objects (a list it can fill).
+impl<N: Number, C: Config<Number = N>> Prepared<C>
+where
+    C::Objects: List<Object<N>>,
+{
     /// [`Scene::prepare_with_objects`] into `self`, every part written in place (any earlier
     /// scene is replaced).
     pub fn prepare_in_place<const CAPACITY: usize>(
@@ -280,15 +286,15 @@ impl<N: Number + 'static, const MAX_OBJECTS: usize, const POOL: usize, const DEP
                     reflectance: material.cmy.map(|c| N::from_f64((1.0 - c).clamp(0.0, 1.0))),
                 },
             };
-            objects.push(prepared).map_err(|_| error(SceneErrorKind::TooManyObjects { capacity: MAX_OBJECTS }))?;
+            objects.push(prepared).map_err(|_| error(SceneErrorKind::TooManyObjects { capacity: C::MAX_OBJECTS }))?;
             #[cfg(feature = "ray-tree")]
             if spawns_rays {
                 self.optics
                     .push(Optics { reflect: N::from_f64(material.reflect), transmit: N::from_f64(material.transmit), ior: N::from_f64(material.ior) })
-                    .map_err(|_| error(SceneErrorKind::TooManyObjects { capacity: MAX_OBJECTS }))?;
+                    .map_err(|_| error(SceneErrorKind::TooManyObjects { capacity: C::MAX_OBJECTS }))?;
                 self.spheres
                     .push(BoundingSphere::of(object.primitive, &object.world_from_object))
-                    .map_err(|_| error(SceneErrorKind::TooManyObjects { capacity: MAX_OBJECTS }))?;
+                    .map_err(|_| error(SceneErrorKind::TooManyObjects { capacity: C::MAX_OBJECTS }))?;
             }
             #[cfg(not(feature = "ray-tree"))]
             if material.spawns_rays() {
