@@ -94,7 +94,7 @@ impl<T: Clone, const K: usize> List<T> for heapless::Vec<T, K> {
 /// The build's number type, object storage and capacities.
 pub trait Config: 'static {
     /// The number type the tracer computes in.
-    type Number: Number + 'static;
+    type Number: Number;
     /// Where the prepared objects live (the scene's own list, or the firmware's in flash).
     type Objects: Objects<Self::Number>;
     /// One `T` per object.
@@ -110,7 +110,8 @@ pub trait Config: 'static {
     type SpaceEntries: Table<u16>;
     /// The ray tree's stack of nodes: at most [`Config::TREE_DEPTH`].
     type TreeStack<T: Clone>: List<T>;
-    /// One row of antialiasing corners ([`Config::ANTIALIAS_ROW`] of them).
+    /// One row of antialiasing corners: its length is how many the render keeps (the
+    /// image's width plus one shares every corner; fewer traces some twice).
     type CornerRow: Table<[u8; 3]>;
     /// The most objects the tables hold.
     const MAX_OBJECTS: usize;
@@ -118,9 +119,6 @@ pub trait Config: 'static {
     const GRID_ENTRIES_PER_OBJECT: usize;
     /// The deepest ray tree the render follows (a scene's deeper `depth` is cut here).
     const TREE_DEPTH: usize;
-    /// The antialiasing corners kept of a row (the image's width plus one shares every
-    /// corner; fewer traces some twice).
-    const ANTIALIAS_ROW: usize;
 }
 
 /// The grid's pool entries per object by default: an object may overlap this many cells on
@@ -169,7 +167,6 @@ where
     const MAX_OBJECTS: usize = K;
     const GRID_ENTRIES_PER_OBJECT: usize = POOL;
     const TREE_DEPTH: usize = DEPTH;
-    const ANTIALIAS_ROW: usize = ROW;
 }
 
 /// The space grid's cell entries per object on average at most (else no grid).

@@ -15,7 +15,7 @@
 //! statistics (summed over the passes). Antialiasing and the ray tree are the scene's: how a
 //! pixel is computed, the same in every order. The stack a render takes is the scene's
 //! [`Config`]'s: a ray tree at most `TREE_DEPTH` generations deep (a scene's deeper `depth` is
-//! cut there) and a row of `ANTIALIAS_ROW` antialiasing corners.
+//! cut there) and a row of antialiasing corners (`CornerRow`).
 
 use core::ops::Range;
 
