@@ -91,10 +91,52 @@ impl<T: Clone, const K: usize> List<T> for heapless::Vec<T, K> {
     }
 }
 
+/// An object's number as the tables keep it, and a place in the grid's pool: `u16` on a
+/// microcontroller (65,535 objects and pool entries at most, two bytes each), `u32` where a
+/// scene may be larger.
+pub trait Index: Copy + Default + Ord + Debug + 'static {
+    /// The largest value it holds: the tables hold at most this many objects and entries.
+    const MAX: usize;
+    /// `value`, at most [`Index::MAX`] (callers cap it; a larger one would wrap).
+    fn new(value: usize) -> Self;
+    /// The value.
+    fn get(self) -> usize;
+}
+
+impl Index for u16 {
+    const MAX: usize = u16::MAX as usize;
+
+    #[inline(always)]
+    fn new(value: usize) -> Self {
+        value as u16
+    }
+
+    #[inline(always)]
+    fn get(self) -> usize {
+        usize::from(self)
+    }
+}
+
+impl Index for u32 {
+    const MAX: usize = if usize::BITS < 32 { usize::MAX } else { u32::MAX as usize };
+
+    #[inline(always)]
+    fn new(value: usize) -> Self {
+        value as u32
+    }
+
+    #[inline(always)]
+    fn get(self) -> usize {
+        self as usize
+    }
+}
+
 /// The build's number type, object storage and capacities.
 pub trait Config: 'static {
     /// The number type the tracer computes in.
     type Number: Number;
+    /// An object's number in the tables (and a place in the grid's pool).
+    type Index: Index;
     /// Where the prepared objects live (the scene's own list, or the firmware's in flash).
     type Objects: Objects<Self::Number>;
     /// One `T` per object.
@@ -107,7 +149,7 @@ pub trait Config: 'static {
     /// The screen grid's pool: [`Config::GRID_ENTRIES_PER_OBJECT`] `T`s per object.
     type GridPool<T: Copy>: Table<T>;
     /// The secondary rays' space grid's entries: `ENTRIES_PER_OBJECT` per object.
-    type SpaceEntries: Table<u16>;
+    type SpaceEntries: Table<Self::Index>;
     /// The ray tree's stack of nodes: at most [`Config::TREE_DEPTH`].
     type TreeStack<T: Clone>: List<T>;
     /// One row of antialiasing corners: its length is how many the render keeps (the
@@ -156,6 +198,7 @@ where
     O: Objects<N> + 'static,
 {
     type Number = N;
+    type Index = u16;
     type Objects = O;
     type PerObject<T: Copy> = [T; K];
     type PerObjectPerOtherLight<T: Copy> = [[T; K]; MAX_LIGHTS - 1];

@@ -4,7 +4,7 @@
 
 use crate::camera::{Camera, PixelPosition};
 use crate::geometry::{AffineTransform, Vector3};
-use crate::config::{Arrays, Config, Table};
+use crate::config::{Arrays, Config, Index, Table};
 use crate::model::Objects;
 use crate::number::Number;
 use crate::model::{ObjectDescription, Optimizations, Primitive};
@@ -40,7 +40,7 @@ impl Tuning {
 }
 
 /// What the optimizations derive per object from the bounding volumes at preprocess time.
-/// Per object: its place in the test order (`u16`), its extent (4 `u16`), a depth bound (`N`)
+/// Per object: its place in the test order (a `Config::Index`), its extent (4 `u16`), a depth bound (`N`)
 /// and a shadow bounding capsule (8 `N`); per scene: the grid.
 pub struct Acceleration<C: Config> {
     count: usize,
@@ -48,7 +48,7 @@ pub struct Acceleration<C: Config> {
     tuning: Tuning,
     screen: Screen,
     /// Test order: sorted by depth bound with Sortlist, object order otherwise.
-    order: C::PerObject<u16>,
+    order: C::PerObject<C::Index>,
     extents: C::PerObject<Extent>,
     /// Lower bound of the `t` of any hit on each object (`−N::MAX`: none known).
     near: C::PerObject<C::Number>,
@@ -116,7 +116,7 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
     /// [`Acceleration::build_with`] in place, so that the structures in a `static` (the
     /// firmware's scene) are never copied through the stack.
     pub fn rebuild(&mut self, camera: &Camera<N>, optimizations: Optimizations, objects: &[ObjectDescription], tuning: Tuning) {
-        let count = objects.len().min(self.order.slots().len()).min(usize::from(u16::MAX));
+        let count = objects.len().min(self.order.slots().len()).min(C::Index::MAX);
         // The geometry as the tracer will see it: the inverse rounded to N, inverted back.
         let of = |index: usize| {
             let geometry = objects.get(index).and_then(rendered_geometry::<N>)?;
@@ -130,7 +130,7 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
     /// `rebuild` for the same bounds, but that objects reaching the eye plane cover the whole
     /// screen (the eye-plane clip needs the `f64` silhouettes).
     pub fn rebuild_from_bounds(&mut self, camera: &Camera<N>, optimizations: Optimizations, bounds: &[ObjectBounds<N>]) {
-        let count = bounds.len().min(self.order.slots().len()).min(usize::from(u16::MAX));
+        let count = bounds.len().min(self.order.slots().len()).min(C::Index::MAX);
         self.rebuild_with(camera, optimizations, Tuning::IMPROVED, count, |index| bounds.get(index).map(|b| (*b, None)));
     }
 
@@ -151,7 +151,7 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
         self.tuning = tuning;
         self.screen = screen;
         for (index, place) in self.order.slots_mut().iter_mut().enumerate() {
-            *place = index as u16;
+            *place = C::Index::new(index);
         }
         self.extents.slots_mut().fill(Extent::whole(&screen));
         self.near.slots_mut().fill(-N::MAX);
@@ -230,8 +230,7 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
             _ => projection::Projected::Whole,
         };
         let near = self.near.slots();
-        let block_capsule = |object: u16, columns: (u16, u16), rows: (u16, u16)| -> N {
-            let index = usize::from(object);
+        let block_capsule = |index: usize, columns: (u16, u16), rows: (u16, u16)| -> N {
             let global = near.get(index).copied().unwrap_or(-N::MAX);
             // Only cylinders and cones gain: a sphere's or cube's capsule is a ball.
             let shaped = shapes.slots().get(index).is_some_and(|p| matches!(p, Primitive::Cylinder | Primitive::Cone));
@@ -241,8 +240,7 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
                 _ => global,
             }
         };
-        let block_depth = |object: u16, columns: (u16, u16), rows: (u16, u16)| -> N {
-            let index = usize::from(object);
+        let block_depth = |index: usize, columns: (u16, u16), rows: (u16, u16)| -> N {
             let global = near.get(index).copied().unwrap_or(-N::MAX);
             let block = of(index)
                 .and_then(|(_, geometry)| geometry)
@@ -271,13 +269,13 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
 
     /// Grid: the entries of the pixel's cell and the pixel's offsets in it; `None` without a grid.
     #[inline]
-    pub fn grid_cell(&self, pixel: PixelPosition) -> Option<(&[grid::Entry], &[N], u16, u16)> {
+    pub fn grid_cell(&self, pixel: PixelPosition) -> Option<grid::CellAt<'_, C>> {
         self.grid.cell(pixel.column, pixel.row)
     }
 
     /// Every object, in test order (sorted by depth bound with Sortlist).
     #[inline]
-    pub fn order(&self) -> &[u16] {
+    pub fn order(&self) -> &[C::Index] {
         self.order.slots().get(..self.count).unwrap_or(&[])
     }
 

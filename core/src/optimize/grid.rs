@@ -1,8 +1,8 @@
 //! Grid (§4.7.4, `makegrid`): the screen cut into 20x20 cells, each with the objects that may
 //! cover it, in test order (so with Sortlist each cell list stays sorted).
 //!
-//! No heap: the cell lists share one pool of `Config::GRID_ENTRIES_PER_OBJECT` entries an object, of three
-//! `u16`s, with 401 `u16` start offsets. The cell size is the thesis's `(pixels − 1)/20 + 1`.
+//! No heap: the cell lists share one pool of `Config::GRID_ENTRIES_PER_OBJECT` entries an object
+//! (an object's number and two `u16`s), with 401 start offsets (`Config::Index`s). The cell size is the thesis's `(pixels − 1)/20 + 1`.
 //! A cell list simply ends at the next cell's start (the thesis's NULL-dereferencing
 //! `nextobject`, digest B4, cannot happen). Should a scene need more entries than the pool
 //! holds, the grid is switched off for that scene (every object is a candidate), which changes
@@ -18,7 +18,7 @@ use core::num::NonZeroU16;
 
 use super::capsule::Stadium;
 use super::extents::Extent;
-use crate::config::{Arrays, Config, Table};
+use crate::config::{Arrays, Config, Index, Table};
 use crate::model::Objects;
 use crate::number::Number;
 use super::pixelbuffer::band_span;
@@ -42,11 +42,20 @@ pub enum CellShape {
 }
 
 /// A per-entry depth bound: (object, columns, rows) -> lower bound of `t`.
-pub type BlockDepth<'a, N> = dyn Fn(u16, (u16, u16), (u16, u16)) -> N + 'a;
+pub type BlockDepth<'a, N> = dyn Fn(usize, (u16, u16), (u16, u16)) -> N + 'a;
 
-/// One cell entry: object number, then the columns and rows it may cover within the cell as
-/// `first | last << 8` offsets from the cell's corner.
-pub type Entry = [u16; 3];
+/// One cell entry: the object's number, then the columns and rows it may cover within the cell
+/// as `first | last << 8` offsets from the cell's corner.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Entry<I> {
+    pub object: I,
+    pub columns: u16,
+    pub rows: u16,
+}
+
+/// A pixel's cell: its entries, their depth bounds, and the pixel's offsets from the cell's
+/// corner (saturated at 255).
+pub type CellAt<'a, C> = (&'a [Entry<<C as Config>::Index>], &'a [<C as Config>::Number], u16, u16);
 
 const WHOLE_CELL: u16 = 0xFF00;
 
@@ -61,8 +70,8 @@ pub struct Grid<C: Config> {
     /// The cells' size; `None` when the grid is off or its pool overflowed (and, all bytes
     /// zero, before it is built).
     cells: Option<CellSize>,
-    starts: [u16; CELLS + 1],
-    pool: C::GridPool<Entry>,
+    starts: [C::Index; CELLS + 1],
+    pool: C::GridPool<Entry<C::Index>>,
     /// With Sortlist: each entry's lower bound of `t` for the part of its object seen through
     /// the entry's rectangle (cell lists are sorted by it).
     depth: C::GridPool<C::Number>,
@@ -86,7 +95,7 @@ impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: u
     pub const UNSET: Self = Self {
         cells: None,
         starts: [0; CELLS + 1],
-        pool: [[[0; 3]; POOL]; K],
+        pool: [[Entry { object: 0, columns: 0, rows: 0 }; POOL]; K],
         depth: [[N::ZEROED; POOL]; K],
     };
 }
@@ -96,7 +105,7 @@ impl<N: Number, C: Config<Number = N>> Grid<C> {
     /// of `objects`.
     pub fn inactive(objects: usize) -> Self {
         let entries = objects.saturating_mul(C::GRID_ENTRIES_PER_OBJECT);
-        Self { cells: None, starts: [0; CELLS + 1], pool: C::GridPool::filled(entries, [0; 3]), depth: C::GridPool::filled(entries, -N::MAX) }
+        Self { cells: None, starts: [C::Index::default(); CELLS + 1], pool: C::GridPool::filled(entries, Entry::default()), depth: C::GridPool::filled(entries, -N::MAX) }
     }
 
     /// The entries the pool holds.
@@ -108,7 +117,7 @@ impl<N: Number, C: Config<Number = N>> Grid<C> {
     /// an object's silhouette (used only with `cell_rectangles`).
     pub fn build(
         screen: &Screen,
-        order: &[u16],
+        order: &[C::Index],
         extents: &[Extent],
         polygon: impl Fn(usize) -> Projected,
         cells: CellShape,
@@ -125,7 +134,7 @@ impl<N: Number, C: Config<Number = N>> Grid<C> {
     pub fn rebuild(
         &mut self,
         screen: &Screen,
-        order: &[u16],
+        order: &[C::Index],
         extents: &[Extent],
         polygon: impl Fn(usize) -> Projected,
         stadium: impl Fn(usize) -> Option<Stadium>,
@@ -135,7 +144,7 @@ impl<N: Number, C: Config<Number = N>> Grid<C> {
         // The pool and the bounds are not cleared: the pass below writes every entry a cell
         // list reaches (clearing them cost the lattice 7 k instructions a frame on the Cortex-M4F).
         self.cells = None;
-        self.starts.fill(0);
+        self.starts.fill(C::Index::default());
         if C::GRID_ENTRIES_PER_OBJECT == 0 {
             return;
         }
@@ -144,13 +153,13 @@ impl<N: Number, C: Config<Number = N>> Grid<C> {
         let (cell_width, cell_height) = (screen.width.saturating_sub(1) / GRID_SIZE + 1, screen.height.saturating_sub(1) / GRID_SIZE + 1);
         let (cell_width, cell_height) = (NonZeroU16::new(cell_width).unwrap_or(NonZeroU16::MIN), NonZeroU16::new(cell_height).unwrap_or(NonZeroU16::MIN));
         // Calls `add(cell, entry)` for every cell the object may cover.
-        let visit = |object: u16, add: &mut dyn FnMut(usize, Entry)| {
-            let Some(extent) = extents.get(usize::from(object)).copied() else { return };
+        let visit = |object: usize, add: &mut dyn FnMut(usize, Entry<C::Index>)| {
+            let Some(extent) = extents.get(object).copied() else { return };
             if extent.is_empty() {
                 return;
             }
-            let shape = if cells == CellShape::Polygons && super::build_options::SILHOUETTES { polygon(usize::from(object)) } else { Projected::Whole };
-            let stadium = if cells == CellShape::Octagons { stadium(usize::from(object)) } else { None };
+            let shape = if cells == CellShape::Polygons && super::build_options::SILHOUETTES { polygon(object) } else { Projected::Whole };
+            let stadium = if cells == CellShape::Octagons { stadium(object) } else { None };
             let (width, height) = (cell_width.get(), cell_height.get());
             for cell_row in extent.first_row / cell_height..=(extent.last_row / cell_height).min(GRID_SIZE - 1) {
                 let y0 = cell_row * height;
@@ -183,11 +192,11 @@ impl<N: Number, C: Config<Number = N>> Grid<C> {
                             },
                             None => ((c1, c2), (r1, r2)),
                         };
-                        add(cell, [object, pack(c1, c2, x0), pack(r1, r2, y0)]);
+                        add(cell, Entry { object: C::Index::new(object), columns: pack(c1, c2, x0), rows: pack(r1, r2, y0) });
                         continue;
                     }
                     let Projected::Points(p) = &shape else {
-                        add(cell, [object, WHOLE_CELL, WHOLE_CELL]);
+                        add(cell, Entry { object: C::Index::new(object), columns: WHOLE_CELL, rows: WHOLE_CELL });
                         continue;
                     };
                     // The polygon's columns within the cell's rows, then its rows within those
@@ -202,32 +211,34 @@ impl<N: Number, C: Config<Number = N>> Grid<C> {
                     if r1 > r2 {
                         continue;
                     }
-                    add(cell, [object, pack(c1, c2, x0), pack(r1, r2, y0)]);
+                    add(cell, Entry { object: C::Index::new(object), columns: pack(c1, c2, x0), rows: pack(r1, r2, y0) });
                 }
             }
         };
         // One visit: the entries in test order into the pool, each one's cell noted and its
         // depth bound computed; then a stable counting sort by cell, in place. (Visiting twice,
         // to count and then to place, cost the lattice a third of its preparation.)
-        let capacity = grid.pool.slots().len().min(u16::MAX as usize);
+        let capacity = grid.pool.slots().len().min(C::Index::MAX);
         let pool = grid.pool.slots_mut();
         let bounds = grid.depth.slots_mut();
         // Each entry's cell, then its place in the sorted pool.
-        let mut places = C::GridPool::<u16>::filled(capacity, 0);
+        let mut places = C::GridPool::<C::Index>::filled(capacity, C::Index::default());
         let places = places.slots_mut();
         // Entries per cell, then each cell's next free place.
-        let mut next = [0u16; CELLS];
+        let mut next = [C::Index::default(); CELLS];
         let mut used = 0usize;
         let mut overflowed = false;
         for &object in order {
+            let object = object.get();
             visit(object, &mut |cell, entry| {
                 let (Some(place), Some(slot), Some(count)) = (places.get_mut(used), pool.get_mut(used), next.get_mut(cell)) else {
                     overflowed = true;
                     return;
                 };
-                *place = cell as u16;
+                *place = C::Index::new(cell);
                 *slot = entry;
-                *count = count.saturating_add(1);
+                // At most `capacity` entries in all (a place for each), so no cell wraps.
+                *count = C::Index::new(count.get() + 1);
                 if let (None, Some(bound)) = (depth, bounds.get_mut(used)) {
                     *bound = -N::MAX;
                 }
@@ -237,8 +248,8 @@ impl<N: Number, C: Config<Number = N>> Grid<C> {
                         (corner + (packed & 0xFF), corner + (packed >> 8))
                     };
                     let (cell_row, cell_column) = ((cell / GRID_SIZE as usize) as u16, (cell % GRID_SIZE as usize) as u16);
-                    let columns = origin(entry[1], cell_width.get(), cell_column);
-                    let rows = origin(entry[2], cell_height.get(), cell_row);
+                    let columns = origin(entry.columns, cell_width.get(), cell_column);
+                    let rows = origin(entry.rows, cell_height.get(), cell_row);
                     *bound = depth(object, columns, rows);
                 }
                 used += 1;
@@ -248,26 +259,26 @@ impl<N: Number, C: Config<Number = N>> Grid<C> {
             grid.clear();
             return;
         }
-        let mut total = 0u16;
+        let mut total = 0;
         for (start, count) in grid.starts.iter_mut().zip(next.iter_mut()) {
-            *start = total;
-            total += *count;
+            *start = C::Index::new(total);
+            total += count.get();
             *count = *start;
         }
         if let Some(end) = grid.starts.last_mut() {
-            *end = total;
+            *end = C::Index::new(total);
         }
         // Each entry's place: its cell's next (stable: entries of a cell keep test order).
         for place in places.iter_mut().take(used) {
-            if let Some(next) = next.get_mut(usize::from(*place)) {
+            if let Some(next) = next.get_mut(place.get()) {
                 *place = *next;
-                *next += 1;
+                *next = C::Index::new(next.get() + 1);
             }
         }
         // Move every entry to its place by following the permutation's cycles.
         for index in 0..used {
             while let Some(&target) = places.get(index) {
-                let target = usize::from(target);
+                let target = target.get();
                 if target == index || target >= used {
                     break;
                 }
@@ -280,7 +291,7 @@ impl<N: Number, C: Config<Number = N>> Grid<C> {
         if depth.is_some() {
             for span in grid.starts.windows(2) {
                 let &[start, end] = span else { continue };
-                let range = usize::from(start)..usize::from(end);
+                let range = start.get()..end.get();
                 let (Some(bounds), Some(pool), Some(places)) = (bounds.get_mut(range.clone()), pool.get_mut(range.clone()), places.get_mut(range)) else { continue };
                 if C::MAX_OBJECTS < INSERTION_SORT_BELOW || bounds.len() < INSERTION_SORT_BELOW {
                     sort_cell(bounds, pool);
@@ -295,8 +306,8 @@ impl<N: Number, C: Config<Number = N>> Grid<C> {
     /// Back to [`Grid::inactive`], in place.
     pub fn clear(&mut self) {
         self.cells = None;
-        self.starts.fill(0);
-        self.pool.slots_mut().fill([0; 3]);
+        self.starts.fill(C::Index::default());
+        self.pool.slots_mut().fill(Entry::default());
         self.depth.slots_mut().fill(-N::MAX);
     }
 
@@ -308,12 +319,12 @@ impl<N: Number, C: Config<Number = N>> Grid<C> {
     /// The entries of the cell holding image pixel (column, row), and the pixel's offsets
     /// from the cell's corner (saturated at 255); `None` when the grid is not active.
     #[inline]
-    pub fn cell(&self, column: u16, row: u16) -> Option<(&[Entry], &[N], u16, u16)> {
+    pub fn cell(&self, column: u16, row: u16) -> Option<CellAt<'_, C>> {
         let CellSize { width, height } = self.cells?;
         let (cell_column, cell_row) = ((column / width).min(GRID_SIZE - 1), (row / height).min(GRID_SIZE - 1));
         let cell = usize::from(cell_row) * GRID_SIZE as usize + usize::from(cell_column);
         let (Some(start), Some(end)) = (self.starts.get(cell), self.starts.get(cell + 1)) else { return Some((&[], &[], 0, 0)) };
-        let (start, end) = (usize::from(*start), usize::from(*end));
+        let (start, end) = (start.get(), end.get());
         let dx = (column - cell_column * width.get()).min(255);
         let dy = (row - cell_row * height.get()).min(255);
         Some((self.pool.slots().get(start..end).unwrap_or(&[]), self.depth.slots().get(start..end).unwrap_or(&[]), dx, dy))
@@ -321,14 +332,14 @@ impl<N: Number, C: Config<Number = N>> Grid<C> {
 
     /// Total entries over all cells.
     pub fn entries(&self) -> usize {
-        self.starts.get(CELLS).map_or(0, |entries| usize::from(*entries))
+        self.starts.get(CELLS).map_or(0, |entries| entries.get())
     }
 }
 
 /// Sorts one cell's entries by their bounds (stable: insertion sort, with pattern-matched pairs
 /// so that no index can be out of range).
 #[allow(clippy::neg_cmp_op_on_partial_ord, reason = "`!(b < a)` is meant: it also stops at a NaN bound, where `b >= a` would not")]
-fn sort_cell<N: Number>(bounds: &mut [N], pool: &mut [Entry]) {
+fn sort_cell<N: Number, I: Index>(bounds: &mut [N], pool: &mut [Entry<I>]) {
     for i in 1..bounds.len().min(pool.len()) {
         let mut j = i;
         while j > 0 {
@@ -347,13 +358,13 @@ fn sort_cell<N: Number>(bounds: &mut [N], pool: &mut [Entry]) {
 /// broken by each entry's position before the sort (noted in `places`), so that the result is
 /// the stable sort's.
 #[allow(clippy::neg_cmp_op_on_partial_ord, reason = "`!(b < a)`: equal, or unordered (a NaN), then by position")]
-fn sort_large_cell<N: Number>(bounds: &mut [N], pool: &mut [Entry], places: &mut [u16]) {
+fn sort_large_cell<N: Number, I: Index>(bounds: &mut [N], pool: &mut [Entry<I>], places: &mut [I]) {
     for (position, place) in places.iter_mut().enumerate() {
-        *place = position as u16;
+        *place = I::new(position);
     }
     let len = bounds.len().min(pool.len()).min(places.len());
     let mut cell = (bounds, pool, places);
-    let key = |cell: &(&mut [N], &mut [Entry], &mut [u16]), at: usize| Some((*cell.0.get(at)?, *cell.2.get(at)?));
+    let key = |cell: &(&mut [N], &mut [Entry<I>], &mut [I]), at: usize| Some((*cell.0.get(at)?, *cell.2.get(at)?));
     heapsort(
         &mut cell,
         len,
@@ -373,9 +384,9 @@ fn sort_large_cell<N: Number>(bounds: &mut [N], pool: &mut [Entry], places: &mut
 
 /// Whether a pixel at offsets (dx, dy) in the cell may be covered by the entry's object.
 #[inline]
-pub fn entry_covers(entry: &Entry, dx: u16, dy: u16) -> bool {
+pub fn entry_covers<I>(entry: &Entry<I>, dx: u16, dy: u16) -> bool {
     let inside = |packed: u16, offset: u16| offset >= (packed & 0xFF) && offset <= (packed >> 8);
-    inside(entry[1], dx) && inside(entry[2], dy)
+    inside(entry.columns, dx) && inside(entry.rows, dy)
 }
 
 #[cfg(test)]
@@ -396,7 +407,7 @@ mod tests {
                     (state >> 28) as f32
                 })
                 .collect();
-            let pool: Vec<Entry> = (0..count as u16).map(|object| [object, 0, 0]).collect();
+            let pool: Vec<Entry<u16>> = (0..count as u16).map(|object| Entry { object, columns: 0, rows: 0 }).collect();
             let (mut small, mut small_pool) = (bounds.clone(), pool.clone());
             sort_cell(&mut small, &mut small_pool);
             let (mut large, mut large_pool, mut places) = (bounds, pool, std::vec![0u16; count]);

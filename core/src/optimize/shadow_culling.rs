@@ -14,7 +14,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 use crate::geometry::Vector3;
-use crate::config::Config;
+use crate::config::{Config, Index};
 use crate::number::Number;
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -415,23 +415,23 @@ impl BlockerSet {
 /// (`order` is scratch space, one entry per object): the footprints sorted by their boxes' low
 /// x, each compared only with those whose x range overlaps its own, so the work grows with the
 /// objects and the overlapping pairs, not with all pairs.
-pub fn blocker_table<C: Config<Number = N>, N: Number>(footprints: &[LightReach<N>], order: &mut [u16], blockers: &mut [BlockerSet]) {
-    let count = footprints.len().min(order.len()).min(blockers.len()).min(usize::from(u16::MAX));
+pub fn blocker_table<C: Config<Number = N>, N: Number>(footprints: &[LightReach<N>], order: &mut [C::Index], blockers: &mut [BlockerSet]) {
+    let count = footprints.len().min(order.len()).min(blockers.len()).min(C::Index::MAX);
     let (order, blockers) = (&mut order[..count], &mut blockers[..count]);
     blockers.fill(BlockerSet::EMPTY);
     for (index, place) in order.iter_mut().enumerate() {
-        *place = index as u16;
+        *place = C::Index::new(index);
     }
-    let low_x = |index: u16| footprints.get(usize::from(index)).map_or(-N::MAX, |f| f.low(0));
-    super::sortlist::sort_by_bound::<C, _>(order, |index| low_x(index as u16));
+    let low_x = |index: usize| footprints.get(index).map_or(-N::MAX, |f| f.low(0));
+    super::sortlist::sort_by_bound::<C, _>(order, low_x);
     for (position, &first) in order.iter().enumerate() {
-        let Some(a) = footprints.get(usize::from(first)) else { continue };
+        let Some(a) = footprints.get(first.get()) else { continue };
         for &second in order.iter().skip(position + 1) {
-            let Some(b) = footprints.get(usize::from(second)) else { continue };
+            let Some(b) = footprints.get(second.get()) else { continue };
             if b.low(0) > a.high(0) {
                 break;
             }
-            let (i, j) = (usize::from(first), usize::from(second));
+            let (i, j) = (first.get(), second.get());
             // `b.may_shadow(a)` and `a.may_shadow(b)`, their common part once.
             let (b_shadows_a, a_shadows_b) = (j < BlockerSet::CAPACITY && b.near <= a.far, i < BlockerSet::CAPACITY && a.near <= b.far);
             if !(b_shadows_a || a_shadows_b) || !a.meets(b) {

@@ -18,7 +18,7 @@
 
 use super::bounding_volume::{dot, largest_semi_axis, ObjectGeometry, View};
 use super::projection::Screen;
-use crate::config::Config;
+use crate::config::{Config, Index};
 
 /// The lower bound of `t` for one object (already lowered by the rounding margin); `None` when
 /// no bound is known (the object is then tested first and never ends the loop).
@@ -87,23 +87,23 @@ pub const INSERTION_SORT_BELOW: usize = 64;
 /// from the identity order, the same order as a stable sort. Items whose bound is NaN keep no
 /// particular place. No allocation. A build whose `C` holds fewer objects than the heapsort
 /// needs links only the insertion sort.
-pub fn sort_by_bound<C: Config, T: PartialOrd + Copy>(order: &mut [u16], bound: impl Fn(usize) -> T) {
+pub fn sort_by_bound<C: Config, T: PartialOrd + Copy>(order: &mut [C::Index], bound: impl Fn(usize) -> T) {
     if C::MAX_OBJECTS < INSERTION_SORT_BELOW || order.len() < INSERTION_SORT_BELOW {
         for i in 1..order.len() {
             let mut j = i;
-            while j > 0 && bound(usize::from(order[j])) < bound(usize::from(order[j - 1])) {
+            while j > 0 && bound(order[j].get()) < bound(order[j - 1].get()) {
                 order.swap(j, j - 1);
                 j -= 1;
             }
         }
         return;
     }
-    let key = |order: &[u16], at: usize| {
-        let object = order.get(at).copied().unwrap_or(u16::MAX);
-        (bound(usize::from(object)), object)
+    let key = |order: &[C::Index], at: usize| {
+        let object = order.get(at).map_or(usize::MAX, |object| object.get());
+        (bound(object), object)
     };
     #[allow(clippy::neg_cmp_op_on_partial_ord, reason = "`!(b < a)`: equal, or unordered (a NaN), then by object number")]
-    let before = |a: (T, u16), b: (T, u16)| a.0 < b.0 || (!(b.0 < a.0) && a.1 < b.1);
+    let before = |a: (T, usize), b: (T, usize)| a.0 < b.0 || (!(b.0 < a.0) && a.1 < b.1);
     let len = order.len();
     heapsort(order, len, |order, i, j| before(key(order, i), key(order, j)), |order, i, j| {
         if i < order.len() && j < order.len() {

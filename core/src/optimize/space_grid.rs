@@ -15,7 +15,7 @@
 //! on the objects, and costs a division per object and axis).
 
 use crate::geometry::{Ray, Vector3};
-use crate::config::{Arrays, Config, Table, SPACE_ENTRIES_PER_OBJECT};
+use crate::config::{Arrays, Config, Index, Table, SPACE_ENTRIES_PER_OBJECT};
 use crate::model::Objects;
 use crate::number::Number;
 use crate::optimize::bounding_sphere::BoundingSphere;
@@ -36,7 +36,7 @@ pub struct SpaceGrid<C: Config> {
     low: Vector3<C::Number>,
     cell: Vector3<C::Number>,
     /// Where each cell's entries start in `entries` (cell `i`'s run is `starts[i]..starts[i+1]`).
-    starts: [u16; CELLS + 1],
+    starts: [C::Index; CELLS + 1],
     entries: C::SpaceEntries,
     /// Objects tested by every ray (too large for the cells).
     large: BlockerSet,
@@ -106,14 +106,15 @@ impl<N: Number, C: Config<Number = N>> SpaceGrid<C> {
         self.cell = cell;
         self.resolution = resolution;
         // Count, then place (a counting sort by cell), over each object's cell box.
-        let mut counts = [0u16; CELLS + 1];
+        let mut counts = [C::Index::default(); CELLS + 1];
         let mut total = 0usize;
         for (index, s) in spheres.iter().enumerate() {
             match self.cell_box(s) {
                 Some((a, b)) => {
                     for cell in Self::cells_of(a, b, resolution) {
                         if let Some(count) = counts.get_mut(cell) {
-                            *count += 1;
+                            // Wraps only past `Index::MAX` entries in all, and then there is no grid.
+                            *count = C::Index::new(count.get() + 1);
                         }
                         total += 1;
                     }
@@ -122,24 +123,24 @@ impl<N: Number, C: Config<Number = N>> SpaceGrid<C> {
             }
         }
         // By the scene's own count, not the build's capacity: every build of a scene decides alike.
-        if total > ENTRIES_PER_OBJECT * spheres.len() || total > usize::from(u16::MAX) {
+        if total > ENTRIES_PER_OBJECT * spheres.len() || total > C::Index::MAX {
             self.resolution = 0;
             return;
         }
-        let mut start = 0u16;
+        let mut start = 0;
         for (slot, count) in self.starts.iter_mut().zip(counts.iter()) {
-            *slot = start;
-            start += *count;
+            *slot = C::Index::new(start);
+            start += count.get();
         }
         let mut next = self.starts;
         for (index, s) in spheres.iter().enumerate() {
             if let Some((a, b)) = self.cell_box(s) {
                 for cell in Self::cells_of(a, b, resolution) {
                     let Some(position) = next.get_mut(cell) else { continue };
-                    if let Some(entry) = self.entries.slots_mut().get_mut(usize::from(*position)) {
-                        *entry = index as u16;
+                    if let Some(entry) = self.entries.slots_mut().get_mut(position.get()) {
+                        *entry = C::Index::new(index);
                     }
-                    *position += 1;
+                    *position = C::Index::new(position.get() + 1);
                 }
             }
         }
@@ -177,9 +178,9 @@ impl<N: Number, C: Config<Number = N>> SpaceGrid<C> {
     }
 
     /// The objects of one cell.
-    fn cell_objects(&self, cell: usize) -> &[u16] {
+    fn cell_objects(&self, cell: usize) -> &[C::Index] {
         let (Some(&start), Some(&end)) = (self.starts.get(cell), self.starts.get(cell + 1)) else { return &[] };
-        self.entries.slots().get(usize::from(start)..usize::from(end)).unwrap_or(&[])
+        self.entries.slots().get(start.get()..end.get()).unwrap_or(&[])
     }
 
     /// Walks the cells along `ray` in order, calling `test(object)` once per object met (and
@@ -262,7 +263,7 @@ impl<N: Number, C: Config<Number = N>> SpaceGrid<C> {
         for _ in 0..3 * self.resolution {
             let cell_index = ((position[2] * resolution + position[1]) * resolution + position[0]) as usize;
             for &object in self.cell_objects(cell_index) {
-                best = keep(best, offer(usize::from(object), &mut tested));
+                best = keep(best, offer(object.get(), &mut tested));
             }
             let axis = if next[0] <= next[1] && next[0] <= next[2] { 0 } else if next[1] <= next[2] { 1 } else { 2 };
             let exit = next[axis];

@@ -60,7 +60,7 @@ struct Sampler<'a, 'c, N, M, C: Config> {
 }
 
 impl<N: Number, M: Mode<N>, C: Config<Number = N>> Sampler<'_, '_, N, M, C> {
-    fn sample(&self, x: u16, y: u16, statistics: &mut Statistics, cache: &mut ShadowCache) -> Rgb {
+    fn sample(&self, x: u16, y: u16, statistics: &mut Statistics, cache: &mut ShadowCache<C::Index>) -> Rgb {
         let pixel = self.scene.camera.pixel(x, y);
         let surface = primary_surface_then(self.scene, pixel, statistics, cache, self.culling, |at, material, lighting, statistics, cache| {
             let local = self.mode.local(material, lighting, pixel);
@@ -106,7 +106,7 @@ pub(crate) fn render_antialiased<N, P, S, M, C: Config<Number = N>>(
     let rows = rows.start..rows.end.min(height);
     let mut cache = ShadowCache::default();
     // A corner row's sample, with Pixelbuffer's coverage of that row (uncovered: background).
-    let corner = |x: u16, y: u16, coverage: &Option<RowCoverage<C>>, statistics: &mut Statistics, cache: &mut ShadowCache| {
+    let corner = |x: u16, y: u16, coverage: &Option<RowCoverage<C>>, statistics: &mut Statistics, cache: &mut ShadowCache<C::Index>| {
         if coverage.as_ref().is_some_and(|coverage| !coverage.covers(x)) {
             to_rgb(mode.background(), scene)
         } else {
@@ -130,7 +130,7 @@ pub(crate) fn render_antialiased<N, P, S, M, C: Config<Number = N>>(
         for column in 0..width {
             let x = column * step;
             // The top corners from the row above, or traced again beyond the row's capacity.
-            let above = |index: u16, statistics: &mut Statistics, cache: &mut ShadowCache| match top.get(usize::from(index)) {
+            let above = |index: u16, statistics: &mut Statistics, cache: &mut ShadowCache<C::Index>| match top.get(usize::from(index)) {
                 Some(kept) => *kept,
                 None => corner(index * step, y, top_coverage.as_ref().unwrap_or(&None), statistics, cache),
             };
@@ -157,7 +157,7 @@ fn pixel_mean<N: Number, M: Mode<N>, C: Config<Number = N>>(
     pixel: Square,
     antialias: PreparedAntialias,
     statistics: &mut Statistics,
-    cache: &mut ShadowCache,
+    cache: &mut ShadowCache<C::Index>,
 ) -> Rgb {
     // Each split replaces one square by four: at most 3 per level waiting, plus one.
     let mut stack: Vec<Square, 16> = Vec::new();

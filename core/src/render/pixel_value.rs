@@ -36,7 +36,7 @@ fn shade_pixel_cached<N: Number, C: Config<Number = N>>(
     scene: &Prepared<C>,
     pixel: PixelPosition,
     statistics: &mut Statistics,
-    cache: &mut ShadowCache,
+    cache: &mut ShadowCache<C::Index>,
     culling: &[ShadowCulling<'_, N>],
 ) -> ShadedPixel<N> {
     primary_surface_then(scene, pixel, statistics, cache, culling, |_, material, lighting, _, _| ShadedPixel::Surface { material: *material, lighting })
@@ -54,9 +54,9 @@ pub(crate) fn primary_surface_then<N: Number, R, C: Config<Number = N>>(
     scene: &Prepared<C>,
     pixel: PixelPosition,
     statistics: &mut Statistics,
-    cache: &mut ShadowCache,
+    cache: &mut ShadowCache<C::Index>,
     culling: &[ShadowCulling<'_, N>],
-    then: impl FnOnce(&SurfacePoint<N>, &PreparedMaterial<N>, Lighting<N>, &mut Statistics, &mut ShadowCache) -> R,
+    then: impl FnOnce(&SurfacePoint<N>, &PreparedMaterial<N>, Lighting<N>, &mut Statistics, &mut ShadowCache<C::Index>) -> R,
 ) -> Option<R> {
     let ray = scene.camera.primary_ray(pixel)?;
     statistics.rays_traced += 1;
@@ -78,7 +78,7 @@ pub(crate) fn pixel_value<N, M, C: Config<Number = N>>(
     mode: &M,
     pixel: PixelPosition,
     statistics: &mut Statistics,
-    cache: &mut ShadowCache,
+    cache: &mut ShadowCache<C::Index>,
     culling: &[ShadowCulling<'_, N>],
 ) -> Option<M::Pixel>
 where

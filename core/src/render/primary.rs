@@ -12,7 +12,7 @@ use crate::camera::PixelPosition;
 use crate::geometry::{Ray, Vector3};
 use crate::number::Number;
 use crate::optimize::grid::entry_covers;
-use crate::config::{Config, Table};
+use crate::config::{Config, Index, Table};
 use crate::model::Object;
 use crate::scene::Prepared;
 use crate::shapes::Interval;
@@ -56,12 +56,12 @@ pub fn nearest_hit_cached<N: Number, C: Config<Number = N>>(
     ray: &Ray<N>,
     pixel: PixelPosition,
     statistics: &mut Statistics,
-    last_hit: &mut Option<u16>,
+    last_hit: &mut Option<C::Index>,
 ) -> Option<NearestHit<N>> {
     let acceleration = &scene.acceleration;
     let from_eye = scene.camera.eye().is_some();
     let mut nearest: Option<NearestHit<N>> = None;
-    let cached = if acceleration.uses_hit_cache() { last_hit.map(usize::from).filter(|i| acceleration.in_extent(*i, pixel)) } else { None };
+    let cached = if acceleration.uses_hit_cache() { last_hit.map(Index::get).filter(|i| acceleration.in_extent(*i, pixel)) } else { None };
     if let Some(index) = cached {
         // Tested unbounded, before anything else: its result is final, so the loop skips it.
         if let Some(object) = scene.objects.get(index) {
@@ -126,19 +126,19 @@ pub fn nearest_hit_cached<N: Number, C: Config<Number = N>>(
                     }
                 }
             }
-            if !test(scene, ray, pixel, from_eye, cached, statistics, usize::from(entry[0]), &mut nearest) {
+            if !test(scene, ray, pixel, from_eye, cached, statistics, entry.object.get(), &mut nearest) {
                 break;
             }
         }
     } else {
         for &index in acceleration.order() {
-            if !test(scene, ray, pixel, from_eye, cached, statistics, usize::from(index), &mut nearest) {
+            if !test(scene, ray, pixel, from_eye, cached, statistics, index.get(), &mut nearest) {
                 break;
             }
         }
     }
     if let Some(hit) = nearest {
-        *last_hit = Some(hit.object as u16);
+        *last_hit = Some(C::Index::new(hit.object));
     }
     nearest
 }

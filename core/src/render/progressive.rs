@@ -114,7 +114,7 @@ fn trace_pass<N, P, S, M, C: Config<Number = N>>(
     sink: &mut S,
     statistics: &mut Statistics,
     pass: usize,
-    cache: &mut ShadowCache,
+    cache: &mut ShadowCache<C::Index>,
     culling: &[ShadowCulling<'_, N>],
     background: P,
     mode: &M,

@@ -60,7 +60,7 @@ pub(crate) fn trace_tree<N: Number, Colours: NodeColours<N>, C: Config<Number = 
     root: SurfacePoint<N>,
     local: [N; 3],
     statistics: &mut Statistics,
-    cache: &mut ShadowCache,
+    cache: &mut ShadowCache<C::Index>,
 ) -> Option<[N; 3]> {
     let scene = context.scene;
     let depth = usize::from(scene.depth).min(C::TREE_DEPTH);
@@ -144,7 +144,7 @@ fn surface<N: Number, Colours: NodeColours<N>, C: Config<Number = N>>(
     t: N,
     local_normal: Vector3<N>,
     statistics: &mut Statistics,
-    cache: &mut ShadowCache,
+    cache: &mut ShadowCache<C::Index>,
 ) -> Option<(SurfacePoint<N>, [N; 3])> {
     let scene = context.scene;
     let prepared = scene.objects.get(object)?;

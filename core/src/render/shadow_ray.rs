@@ -17,7 +17,7 @@ use crate::geometry::{Ray, Vector3};
 use crate::number::Number;
 use crate::optimize::shadow_culling::{BlockerSet, DirectionChord, QuantizedDirection};
 use crate::model::MAX_LIGHTS;
-use crate::config::Config;
+use crate::config::{Config, Index};
 use crate::scene::Prepared;
 #[cfg(test)]
 use crate::light::PreparedLight;
@@ -42,12 +42,12 @@ pub fn shadow_origin<N: Number>(point: Vector3<N>, normal: Vector3<N>) -> Vector
 
 /// The object that blocked the last shadow ray, tried first by the next one.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct ShadowCache {
-    pub last_blocker: Option<u16>,
+pub struct ShadowCache<I> {
+    pub last_blocker: Option<I>,
     /// The object the last primary ray hit (see `nearest_hit_cached`).
-    pub last_hit: Option<u16>,
+    pub last_hit: Option<I>,
     /// The last blocker of each further light's shadow rays.
-    pub more_blockers: [Option<u16>; MAX_LIGHTS - 1],
+    pub more_blockers: [Option<I>; MAX_LIGHTS - 1],
 }
 
 pub fn in_shadow<N: Number, C: Config<Number = N>>(
@@ -68,7 +68,7 @@ pub fn in_shadow_cached<N: Number, C: Config<Number = N>>(
     to_light: Vector3<N>,
     light_distance: N,
     statistics: &mut Statistics,
-    cache: &mut ShadowCache,
+    cache: &mut ShadowCache<C::Index>,
 ) -> bool {
     in_shadow_culled(scene, shaded_object, point, to_light, light_distance, statistics, cache, &ShadowCulling::default())
 }
@@ -104,7 +104,7 @@ pub fn in_shadow_culled<N: Number, C: Config<Number = N>>(
     to_light: Vector3<N>,
     light_distance: N,
     statistics: &mut Statistics,
-    cache: &mut ShadowCache,
+    cache: &mut ShadowCache<C::Index>,
     culling: &ShadowCulling<'_, N>,
 ) -> bool {
     blocked(scene, shaded_object, point, to_light, light_distance, statistics, &mut cache.last_blocker, culling)
@@ -123,7 +123,7 @@ pub(crate) fn light_share<N: Number, C: Config<Number = N>>(
     to_light: Vector3<N>,
     light_distance: N,
     statistics: &mut Statistics,
-    last_blocker: &mut Option<u16>,
+    last_blocker: &mut Option<C::Index>,
     culling: &ShadowCulling<'_, N>,
 ) -> N {
     #[cfg(feature = "ray-tree")]
@@ -183,7 +183,7 @@ fn blocked<N: Number, C: Config<Number = N>>(
     to_light: Vector3<N>,
     light_distance: N,
     statistics: &mut Statistics,
-    last_blocker: &mut Option<u16>,
+    last_blocker: &mut Option<C::Index>,
     culling: &ShadowCulling<'_, N>,
 ) -> bool {
     statistics.shadow_rays += 1;
@@ -201,7 +201,7 @@ fn blocked<N: Number, C: Config<Number = N>>(
     let set = culling.blockers.get(shaded_object).copied();
     let listed = |index: usize| set.is_none_or(|set| index >= BlockerSet::CAPACITY || set.contains(index));
     // The last blocker first (never the shaded object: it cannot block its own ray).
-    let first = last_blocker.map(usize::from).filter(|index| *index != shaded_object && listed(*index));
+    let first = last_blocker.map(Index::get).filter(|index| *index != shaded_object && listed(*index));
     if let Some(index) = first {
         if candidate_meets(scene, &segment, cones, (from_light, quantized), index, statistics) {
             return true;
@@ -215,7 +215,7 @@ fn blocked<N: Number, C: Config<Number = N>>(
                 let index = 32 * word_index + remaining.trailing_zeros() as usize;
                 remaining &= remaining - 1;
                 if !skip(index) && candidate_meets(scene, &segment, cones, (from_light, quantized), index, statistics) {
-                    *last_blocker = Some(index as u16);
+                    *last_blocker = Some(C::Index::new(index));
                     return true;
                 }
             }
@@ -224,7 +224,7 @@ fn blocked<N: Number, C: Config<Number = N>>(
     let start = if set.is_some() { BlockerSet::CAPACITY } else { 0 };
     for index in start..scene.objects.len() {
         if !skip(index) && candidate_meets(scene, &segment, cones, (from_light, quantized), index, statistics) {
-            *last_blocker = Some(index as u16);
+            *last_blocker = Some(C::Index::new(index));
             return true;
         }
     }

@@ -99,7 +99,7 @@ fn build_shadow_tables<N: Number, C: Config<Number = N>>(
         *cone = footprint.chord;
         *reach = footprint.reach;
     }
-    let mut order = C::PerObject::<u16>::filled(count, 0);
+    let mut order = C::PerObject::<C::Index>::filled(count, C::Index::default());
     blocker_table::<C, N>(reaches.slots().get(..count).unwrap_or(&[]), order.slots_mut(), blockers);
 }
 

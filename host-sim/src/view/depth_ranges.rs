@@ -38,7 +38,7 @@ pub fn draw(plan: &PlanView, target: &mut SimulatorDisplay<Rgb888>, origin: Poin
     let ranges: Vec<(usize, f64, f64)> = plan
         .order
         .iter()
-        .filter_map(|&object| plan.objects.get(usize::from(object)))
+        .filter_map(|&object| plan.objects.get(object))
         .filter_map(|object| object.depth.map(|(near, far)| (object.object, near, far)))
         .collect();
     if ranges.is_empty() {
@@ -95,7 +95,7 @@ mod tests {
             draw(&plan, &mut display, Point::zero(), size.width);
             let mut previous = (i32::MIN, i32::MIN);
             for &object in &plan.order {
-                let colour = object_colour(usize::from(object));
+                let colour = object_colour(object);
                 let points: Vec<Point> = display.bounding_box().points().filter(|p| display.get_pixel(*p) == colour).collect();
                 assert!(!points.is_empty(), "{name}: no bar for object {object}");
                 let top = points.iter().map(|p| p.y).min().unwrap();

@@ -16,7 +16,7 @@ use microtrace::optimize::bounding_volume::ObjectGeometry;
 use microtrace::optimize::bounding_volume::View;
 use microtrace::optimize::projection::Polygon;
 use microtrace::optimize::{sortlist, window_corners};
-use microtrace::config::Config;
+use microtrace::config::{Config, Index};
 use microtrace::scene::Prepared;
 
 use super::colours::object_colour;
@@ -49,7 +49,7 @@ pub enum Rays {
 pub struct PlanView {
     pub objects: Vec<PlanObject>,
     /// The order Sortlist tests the objects in (by near bound); object order without a bound.
-    pub order: Vec<u16>,
+    pub order: Vec<usize>,
     pub rays: Rays,
     /// The (x, z) of the window's left and right edges on the view plane.
     pub window: [[f64; 2]; 2],
@@ -79,12 +79,12 @@ impl PlanView {
             })
             .collect();
         let order = if scene.acceleration.optimizations().sortlist {
-            scene.acceleration.order().to_vec()
+            scene.acceleration.order().iter().map(|object| object.get()).collect()
         } else {
-            let mut order: Vec<u16> = (0..objects.len() as u16).collect();
+            let mut order: Vec<C::Index> = (0..objects.len()).map(C::Index::new).collect();
             let near = |index: usize| objects[index].depth.map_or(f64::NEG_INFINITY, |(near, _)| near);
             sortlist::sort_by_bound::<C, _>(&mut order, near);
-            order
+            order.into_iter().map(|object| object.get()).collect()
         };
         let rays = match screen.view {
             View::Perspective { eye } => Rays::Perspective { eye: [eye[0], eye[2]] },
@@ -226,7 +226,7 @@ mod tests {
             assert!(near <= distance - radius && far >= distance + radius, "object {}: {near}..{far} vs {distance}±{radius}", object.object);
             assert!(near > distance - radius - 2e-3 * distance && far < distance + 2.0 * radius, "object {}: range too loose: {near}..{far} vs {distance}±{radius}", object.object);
         }
-        let nears: Vec<f64> = plan.order.iter().map(|&o| plan.objects[usize::from(o)].depth.unwrap().0).collect();
+        let nears: Vec<f64> = plan.order.iter().map(|&o| plan.objects[o].depth.unwrap().0).collect();
         assert!(nears.windows(2).all(|pair| pair[0] <= pair[1]), "Sortlist order by near bound: {nears:?}");
     }
 
