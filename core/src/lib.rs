@@ -36,3 +36,4 @@ pub mod render;
 pub mod scene;
 pub mod shading;
 pub mod shapes;
+pub mod storage;

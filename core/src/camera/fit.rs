@@ -2,9 +2,9 @@
 //! firmware's 128x64 OLED). The whole original window stays in view: it is extended about its
 //! centre along one axis so that the pixel spacing is the same in x and y (square pixels).
 
-use crate::model::{SceneDescription, Viewport};
+use crate::model::{Description, Viewport};
 
-impl<const MAX_OBJECTS: usize> SceneDescription<MAX_OBJECTS> {
+impl<L> Description<L> {
     /// Sets the viewport to `width` x `height` pixels (both at least 1) and widens the window
     /// about its centre so the old window fits and pixels stay square.
     pub fn fit_to_size(&mut self, width: u16, height: u16) {

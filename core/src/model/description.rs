@@ -1,6 +1,9 @@
 //! The scene as written: every global setting of the thesis's user interface (§2.1 of the
 //! digest) and the list of objects, with the defaults of `docs/scene-format.md`.
-//! Capacities are in the type: `MAX_OBJECTS` is how many objects the build can hold.
+//! The objects' list is a type parameter: a `heapless::Vec` of a capacity fixed at compile
+//! time ([`SceneDescription`]) on the firmware, a list sized at run time on a host.
+
+use core::ops::Deref;
 
 use heapless::Vec;
 
@@ -38,9 +41,9 @@ impl ObjectDescription {
     }
 }
 
-/// A whole scene as written, before any number type is chosen.
+/// A whole scene as written, before any number type is chosen, its objects in `L`.
 #[derive(Clone, Debug, PartialEq)]
-pub struct SceneDescription<const MAX_OBJECTS: usize> {
+pub struct Description<L> {
     pub viewport: Viewport,
     pub window: Window,
     /// The view plane is z = `view_plane`.
@@ -65,7 +68,7 @@ pub struct SceneDescription<const MAX_OBJECTS: usize> {
     pub optimizations: Optimizations,
     /// The 256-entry look-up table built from the `group` statements.
     pub palette: Palette,
-    pub objects: Vec<ObjectDescription, MAX_OBJECTS>,
+    pub objects: L,
     /// Where the camera and light settings were written, for errors that scene preparation
     /// finds in them (0: the format's default, not written).
     pub lines: SettingLines,
@@ -82,7 +85,10 @@ pub struct SettingLines {
     pub antialias: u32,
 }
 
-impl<const MAX_OBJECTS: usize> SceneDescription<MAX_OBJECTS> {
+/// A scene as written with room for `MAX_OBJECTS` objects (capacity in the type).
+pub type SceneDescription<const MAX_OBJECTS: usize> = Description<Vec<ObjectDescription, MAX_OBJECTS>>;
+
+impl<L: Deref<Target = [ObjectDescription]>> Description<L> {
     /// Whether the scene uses anything of chapter 5 (reflection, refraction, a second light or
     /// an intensity, antialiasing): without, it renders exactly as the thesis's pipeline.
     pub fn uses_chapter_five(&self) -> bool {
@@ -90,7 +96,7 @@ impl<const MAX_OBJECTS: usize> SceneDescription<MAX_OBJECTS> {
     }
 }
 
-impl<const MAX_OBJECTS: usize> Default for SceneDescription<MAX_OBJECTS> {
+impl<L: Default> Default for Description<L> {
     /// The defaults of the scene format (the thesis's compiled defaults, with `optimize all`).
     fn default() -> Self {
         Self {
@@ -109,7 +115,7 @@ impl<const MAX_OBJECTS: usize> Default for SceneDescription<MAX_OBJECTS> {
             dither: false,
             optimizations: Optimizations::ALL,
             palette: Palette::grey(),
-            objects: Vec::new(),
+            objects: L::default(),
             lines: SettingLines::default(),
         }
     }

@@ -22,7 +22,7 @@ mod primitive;
 mod view;
 
 pub use colour::{Palette, Rgb4, Rgb888};
-pub use description::{Antialias, ObjectDescription, SceneDescription, SettingLines, DEFAULT_DEPTH, MAX_DEPTH};
+pub use description::{Antialias, Description, ObjectDescription, SceneDescription, SettingLines, DEFAULT_DEPTH, MAX_DEPTH};
 pub use error::{SceneError, SceneErrorKind, Token, TOKEN_EXCERPT_BYTES};
 pub use light::{Light, LightSource, MAX_LIGHTS};
 pub use material::{Material, PreparedMaterial};

@@ -4,7 +4,8 @@
 
 use crate::camera::{Camera, PixelPosition};
 use crate::geometry::{AffineTransform, Vector3};
-use crate::config::{Arrays, Config, Index, Table};
+use crate::config::{Arrays, Config};
+use crate::storage::{Index, Table};
 use crate::model::Objects;
 use crate::number::Number;
 use crate::model::{ObjectDescription, Optimizations, Primitive};
@@ -113,6 +114,24 @@ impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: u
 }
 
 impl<N: Number, C: Config<Number = N>> Acceleration<C> {
+    /// Nothing built, tables for `count` objects (as many as an array holds): [`Acceleration::UNSET`]
+    /// for storage sized at run time.
+    pub fn unset(count: usize) -> Self {
+        Self {
+            count: 0,
+            optimizations: Optimizations::NONE,
+            tuning: Tuning::THESIS,
+            screen: Screen::UNSET,
+            order: C::PerObject::filled(count, C::Index::default()),
+            extents: C::PerObject::filled(count, Extent { first_column: 0, last_column: 0, first_row: 0, last_row: 0, diagonal: [0; 4] }),
+            near: C::PerObject::filled(count, N::ZERO),
+            stadiums: C::PerObject::filled(count, None),
+            #[cfg(feature = "acceleration-tables")]
+            shadow: C::PerObject::filled(count, ShadowBound::UNSET),
+            grid: Grid::inactive(count),
+        }
+    }
+
     /// [`Acceleration::build_with`] in place, so that the structures in a `static` (the
     /// firmware's scene) are never copied through the stack.
     pub fn rebuild(&mut self, camera: &Camera<N>, optimizations: Optimizations, objects: &[ObjectDescription], tuning: Tuning) {

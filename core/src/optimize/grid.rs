@@ -18,7 +18,8 @@ use core::num::NonZeroU16;
 
 use super::capsule::Stadium;
 use super::extents::Extent;
-use crate::config::{Arrays, Config, Index, Table};
+use crate::config::{Arrays, Config};
+use crate::storage::{Index, Table};
 use crate::model::Objects;
 use crate::number::Number;
 use super::pixelbuffer::band_span;

@@ -14,7 +14,8 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 use crate::geometry::Vector3;
-use crate::config::{Config, Index};
+use crate::config::Config;
+use crate::storage::Index;
 use crate::number::Number;
 
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -18,7 +18,8 @@
 
 use super::bounding_volume::{dot, largest_semi_axis, ObjectGeometry, View};
 use super::projection::Screen;
-use crate::config::{Config, Index};
+use crate::config::Config;
+use crate::storage::Index;
 
 /// The lower bound of `t` for one object (already lowered by the rounding margin); `None` when
 /// no bound is known (the object is then tested first and never ends the loop).

@@ -15,7 +15,8 @@
 //! on the objects, and costs a division per object and axis).
 
 use crate::geometry::{Ray, Vector3};
-use crate::config::{Arrays, Config, Index, Table, SPACE_ENTRIES_PER_OBJECT};
+use crate::config::{Arrays, Config, SPACE_ENTRIES_PER_OBJECT};
+use crate::storage::{Index, Table};
 use crate::model::Objects;
 use crate::number::Number;
 use crate::optimize::bounding_sphere::BoundingSphere;
@@ -68,6 +69,20 @@ impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: u
 }
 
 impl<N: Number, C: Config<Number = N>> SpaceGrid<C> {
+    /// No grid, room for `count` objects' entries: [`SpaceGrid::NONE`] for storage sized at
+    /// run time.
+    pub fn none(count: usize) -> Self {
+        Self {
+            resolution: 0,
+            low: Vector3::zero(),
+            cell: Vector3::zero(),
+            starts: [C::Index::default(); CELLS + 1],
+            entries: C::SpaceEntries::filled(count.saturating_mul(ENTRIES_PER_OBJECT), C::Index::default()),
+            large: BlockerSet::EMPTY,
+            large_beyond: false,
+        }
+    }
+
     /// Whether there is a grid to walk.
     pub fn is_built(&self) -> bool {
         self.resolution > 0

@@ -44,8 +44,9 @@ mod number;
 mod tests;
 
 
+use crate::storage::List;
 use crate::model::{SceneError, SceneErrorKind, Token};
-use crate::model::{Antialias, Light, LightSource, ObjectDescription, Optimizations, Primitive, Projection, SceneDescription, Viewport, Window, MAX_DEPTH, MAX_LIGHTS};
+use crate::model::{Antialias, Light, LightSource, Description, ObjectDescription, Optimizations, Primitive, Projection, SceneDescription, Viewport, Window, MAX_DEPTH, MAX_LIGHTS};
 use crate::model::Rgb4;
 
 /// The most arguments any fixed-arity statement takes (`group N R G B up`).
@@ -53,14 +54,20 @@ const MAX_ARGS: usize = 5;
 
 /// Parses a whole `.mts` scene. `MAX_OBJECTS` is the capacity; more objects is an error.
 pub fn parse<const MAX_OBJECTS: usize>(text: &[u8]) -> Result<SceneDescription<MAX_OBJECTS>, SceneError> {
-    let mut scene = SceneDescription::default();
+    parse_into_list(text)
+}
+
+/// [`parse`] into any list of objects (a host's grows as the file does); more objects than
+/// the list holds ([`List::CAPACITY`]) is an error.
+pub fn parse_into_list<L: List<ObjectDescription>>(text: &[u8]) -> Result<Description<L>, SceneError> {
+    let mut scene = Description::default();
     parse_into(text, &mut scene)?;
     Ok(scene)
 }
 
 /// The body of [`parse`], writing into a description the caller owns (so the large
 /// description is not moved around on the stack more than once).
-fn parse_into<const MAX_OBJECTS: usize>(text: &[u8], scene: &mut SceneDescription<MAX_OBJECTS>) -> Result<(), SceneError> {
+fn parse_into<L: List<ObjectDescription>>(text: &[u8], scene: &mut Description<L>) -> Result<(), SceneError> {
     let text = text.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(text);
     let mut line: u32 = 0;
     for raw in text.split(|&b| b == b'\n') {
@@ -79,7 +86,7 @@ fn tokens(code: &str) -> impl Iterator<Item = &str> {
 }
 
 /// The check at the end of each object: its transform must be invertible.
-fn finish_object<const MAX_OBJECTS: usize>(scene: &SceneDescription<MAX_OBJECTS>) -> Result<(), SceneError> {
+fn finish_object<L: List<ObjectDescription>>(scene: &Description<L>) -> Result<(), SceneError> {
     match scene.objects.last() {
         Some(object) if object.world_from_object.affine_inverse().is_none() => {
             Err(SceneError::new(object.line, SceneErrorKind::SingularTransform))
@@ -258,10 +265,10 @@ impl<'a> Statement<'a> {
 const OPTIMIZE_EXPECTED: &str = "`all` or `none` on its own, or any of `pixelbuffer`, `extents`, `grid`, `sortlist`";
 
 /// Parses one statement (comment already removed) into the scene.
-fn statement<const MAX_OBJECTS: usize>(
+fn statement<L: List<ObjectDescription>>(
     code: &str,
     line: u32,
-    scene: &mut SceneDescription<MAX_OBJECTS>,
+    scene: &mut Description<L>,
 ) -> Result<(), SceneError> {
     let mut words = tokens(code);
     let Some(first) = words.next() else {
@@ -380,7 +387,7 @@ fn statement<const MAX_OBJECTS: usize>(
             scene
                 .objects
                 .push(ObjectDescription::new(primitive, line))
-                .map_err(|_| s.error(SceneErrorKind::TooManyObjects { capacity: MAX_OBJECTS }))?;
+                .map_err(|_| s.error(SceneErrorKind::TooManyObjects { capacity: L::CAPACITY }))?;
         }
         Keyword::Scale
         | Keyword::Rotate
@@ -428,9 +435,9 @@ fn optimize(code: &str, line: u32) -> Result<Optimizations, SceneError> {
 }
 
 /// A statement that changes the most recent object.
-fn object_statement<const MAX_OBJECTS: usize>(
+fn object_statement<L: List<ObjectDescription>>(
     s: &Statement<'_>,
-    scene: &mut SceneDescription<MAX_OBJECTS>,
+    scene: &mut Description<L>,
 ) -> Result<(), SceneError> {
     let object = scene
         .objects

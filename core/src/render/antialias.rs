@@ -27,7 +27,8 @@ use super::shadow_ray::{ShadowCache, ShadowCulling};
 use super::Statistics;
 use crate::number::Number;
 use crate::pixel::PixelSink;
-use crate::config::{Config, Table};
+use crate::config::Config;
+use crate::storage::Table;
 use crate::scene::{Prepared, PreparedAntialias};
 
 type Rgb = [u8; 3];

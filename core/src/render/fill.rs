@@ -10,7 +10,8 @@ use crate::optimize::pixelbuffer::hull_span;
 use crate::optimize::sortlist::{heapsort, INSERTION_SORT_BELOW};
 use crate::optimize::projection::Projected;
 use crate::pixel::PixelSink;
-use crate::config::{Config, Table};
+use crate::config::Config;
+use crate::storage::Table;
 use crate::scene::Prepared;
 
 /// Pixelbuffer's fill colour in PGA mode (the thesis's default `fillcolor`); the flood is its

@@ -21,7 +21,8 @@ use crate::camera::PixelPosition;
 use crate::geometry::reflection::{reflected, refracted};
 use crate::geometry::{Ray, Vector3};
 use crate::number::Number;
-use crate::config::{Config, List};
+use crate::config::Config;
+use crate::storage::List;
 use crate::scene::{Optics, Prepared};
 
 /// One node of the tree on the stack.

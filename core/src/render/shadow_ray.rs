@@ -17,7 +17,8 @@ use crate::geometry::{Ray, Vector3};
 use crate::number::Number;
 use crate::optimize::shadow_culling::{BlockerSet, DirectionChord, QuantizedDirection};
 use crate::model::MAX_LIGHTS;
-use crate::config::{Config, Index};
+use crate::config::Config;
+use crate::storage::Index;
 use crate::scene::Prepared;
 #[cfg(test)]
 use crate::light::PreparedLight;

@@ -11,7 +11,7 @@ use crate::optimize::shadow_culling::{blocker_table, BlockerSet, DirectionChord,
 use crate::light::PreparedLight;
 use crate::config::Config;
 #[cfg(feature = "acceleration-tables")]
-use crate::config::Table;
+use crate::storage::Table;
 use crate::scene::Prepared;
 
 /// Runs `body` with the per-render shadow tables, one per light: for a point light each

@@ -17,7 +17,7 @@ use crate::model::{Optimizations, MAX_LIGHTS};
 use crate::light::{PreparedLight, PreparedLightSource};
 use crate::config::Config;
 #[cfg(feature = "ray-tree")]
-use crate::config::List;
+use crate::storage::List;
 use crate::scene::{Optics, Prepared, PreparedAntialias};
 use crate::model::Palette;
 use crate::shading::ShadingConstants;

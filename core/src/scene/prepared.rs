@@ -5,11 +5,14 @@
 //!
 //! Storage is the build's [`Config`]'s: with [`Arrays`], fixed at compile time; no allocator.
 
+use core::ops::Deref;
+
 use crate::model::{Object, Objects, PreparedMaterial};
 use heapless::Vec;
 
 use crate::camera::Camera;
-use crate::config::{Arrays, Config, List, Table};
+use crate::config::{Arrays, Config};
+use crate::storage::{List, Table};
 use crate::geometry::{AffineTransform, Vector3};
 use crate::light::{PreparedLight, PreparedLightSource};
 use crate::number::Number;
@@ -20,7 +23,7 @@ use crate::optimize::space_grid::SpaceGrid;
 use crate::optimize::{Acceleration, Tuning};
 use crate::model::{SceneError, SceneErrorKind};
 use crate::scene::range::{self, RayOrigins};
-use crate::model::{Antialias, ObjectDescription, Optimizations, SceneDescription, Viewport, Window, MAX_LIGHTS};
+use crate::model::{Antialias, Description, ObjectDescription, Optimizations, Viewport, Window, MAX_LIGHTS};
 use crate::model::{Palette, Rgb4};
 use crate::shading::ShadingConstants;
 
@@ -168,24 +171,41 @@ impl<N: Number + 'static, const MAX_OBJECTS: usize, O: Objects<N> + 'static, con
 }
 
 impl<N: Number + 'static, const MAX_OBJECTS: usize, const POOL: usize, const DEPTH: usize, const ROW: usize> Prepared<Arrays<N, MAX_OBJECTS, Vec<Object<N>, MAX_OBJECTS>, POOL, DEPTH, ROW>> {
-    pub fn prepare<const CAPACITY: usize>(description: &SceneDescription<CAPACITY>) -> Result<Self, SceneError> {
-        Self::prepare_with_objects(description, &description.objects)
-    }
-
-    /// Prepares the scene's settings from `description` with the objects given separately (the
-    /// firmware keeps its objects in flash and its settings in a constant).
-    pub fn prepare_with_objects<const CAPACITY: usize>(
-        description: &SceneDescription<CAPACITY>,
-        descriptions: &[ObjectDescription],
-    ) -> Result<Self, SceneError> {
-        let mut scene = Self::UNPREPARED;
-        scene.prepare_in_place(description, descriptions)?;
-        Ok(scene)
-    }
-
     /// Every byte zero, no objects: the value of a scene to be prepared in place
     /// ([`Scene::unprepared`] with no objects).
     pub const UNPREPARED: Self = Self::unprepared(Vec::new());
+}
+
+impl<N: Number, C: Config<Number = N>> Prepared<C> {
+    /// Nothing prepared, `objects` kept, every table made for `count` objects (an array has its
+    /// own length whatever `count`): the start of a scene whose storage is sized at run time.
+    pub fn for_objects(objects: C::Objects, count: usize) -> Self {
+        Self {
+            objects,
+            eyes: C::PerObject::filled(count, Vector3::zero()),
+            camera: Camera::UNSET,
+            light: PreparedLight::Point(Vector3::zero()),
+            light_intensity: N::ZERO,
+            more_lights: Vec::new(),
+            #[cfg(feature = "ray-tree")]
+            optics: C::PerObjectList::default(),
+            #[cfg(feature = "ray-tree")]
+            transparent: false,
+            #[cfg(feature = "ray-tree")]
+            spheres: C::PerObjectList::default(),
+            #[cfg(feature = "ray-tree")]
+            space_grid: SpaceGrid::none(count),
+            depth: 0,
+            antialias: None,
+            constants: ShadingConstants { fifteen: N::ZERO, brightest: N::ZERO, half: N::ZERO, noise_step: N::ZERO, ambient: N::ZERO, full_rgb: N::ZERO, brightest_rgb: N::ZERO },
+            background: 0,
+            shadows: false,
+            dither: false,
+            optimizations: Optimizations::NONE,
+            palette: Palette { entries: [Rgb4 { r: 0, g: 0, b: 0 }; 256] },
+            acceleration: Acceleration::unset(count),
+        }
+    }
 }
 
 /// Preparation from a description, for a scene that owns its objects (a list it can fill).
@@ -193,11 +213,24 @@ impl<N: Number, C: Config<Number = N>> Prepared<C>
 where
     C::Objects: List<Object<N>>,
 {
+    /// The scene `description` describes, its tables sized for its objects (or the `Config`'s
+    /// arrays).
+    pub fn prepare<L: Deref<Target = [ObjectDescription]>>(description: &Description<L>) -> Result<Self, SceneError> {
+        Self::prepare_with_objects(description, &description.objects)
+    }
+
+    /// Prepares the scene's settings from `description` with the objects given separately.
+    pub fn prepare_with_objects<L>(description: &Description<L>, descriptions: &[ObjectDescription]) -> Result<Self, SceneError> {
+        let mut scene = Self::for_objects(C::Objects::default(), descriptions.len());
+        scene.prepare_in_place(description, descriptions)?;
+        Ok(scene)
+    }
+
     /// [`Scene::prepare_with_objects`] into `self`, every part written in place (any earlier
     /// scene is replaced).
-    pub fn prepare_in_place<const CAPACITY: usize>(
+    pub fn prepare_in_place<L>(
         &mut self,
-        description: &SceneDescription<CAPACITY>,
+        description: &Description<L>,
         descriptions: &[ObjectDescription],
     ) -> Result<(), SceneError> {
         #[cfg(not(feature = "antialias"))]
@@ -235,8 +268,8 @@ where
     /// corners and their subdivisions (`render::antialias`): a grid 2^L times finer, reaching half
     /// a pixel beyond the window's edge samples, whose every sample is a "pixel" to the
     /// optimizations.
-    fn camera_and_light<const CAPACITY: usize>(
-        description: &SceneDescription<CAPACITY>,
+    fn camera_and_light<L>(
+        description: &Description<L>,
         antialias: Option<Antialias>,
     ) -> Result<(Camera<N>, PreparedLight<N>), SceneError> {
         let (viewport, window) = match antialias.and_then(|antialias| PreparedAntialias::new(antialias, description.viewport)) {
@@ -249,12 +282,12 @@ where
     }
 
     /// Prepares the objects into `self.objects` and builds the acceleration structures, in place.
-    fn prepare_objects<const CAPACITY: usize>(
+    fn prepare_objects<L>(
         &mut self,
-        description: &SceneDescription<CAPACITY>,
+        description: &Description<L>,
         descriptions: &[ObjectDescription],
     ) -> Result<(), SceneError> {
-        range::check_camera_and_light::<N, CAPACITY>(description)?;
+        range::check_camera_and_light::<N, L>(description)?;
         let origins = RayOrigins::of(description, descriptions);
         let objects = &mut self.objects;
         objects.clear();

@@ -14,7 +14,7 @@ use crate::geometry::Matrix4;
 use crate::number::Number;
 use crate::optimize::bounding_volume::VOLUMES;
 use crate::model::{SceneError, SceneErrorKind};
-use crate::model::{Light, ObjectDescription, Primitive, Projection, SceneDescription};
+use crate::model::{Description, Light, ObjectDescription, Primitive, Projection};
 
 /// The axis-aligned box of every point a ray can start from: the eye or the window on the view
 /// plane for primary rays and, with shadows on, every object's bounding volume for shadow rays.
@@ -25,7 +25,7 @@ pub struct RayOrigins {
 }
 
 impl RayOrigins {
-    pub fn of<const CAPACITY: usize>(description: &SceneDescription<CAPACITY>, objects: &[ObjectDescription]) -> Self {
+    pub fn of<L>(description: &Description<L>, objects: &[ObjectDescription]) -> Self {
         let mut origins = match description.projection {
             Projection::Perspective { eye } => Self { low: eye, high: eye },
             Projection::Parallel { .. } => {
@@ -99,7 +99,7 @@ pub fn check_object<N: Number>(object: &ObjectDescription, inverse: &Matrix4, or
 
 /// Checks the camera and a point light (a directional light is a unit vector). Each error names
 /// the line of the statement that set the value (`description.lines`; 0 for a default).
-pub fn check_camera_and_light<N: Number, const CAPACITY: usize>(description: &SceneDescription<CAPACITY>) -> Result<(), SceneError> {
+pub fn check_camera_and_light<N: Number, L>(description: &Description<L>) -> Result<(), SceneError> {
     let (window, lines) = (description.window, description.lines);
     check::<N>(lines.window, "the window", largest([window.x1, window.x2, window.y1, window.y2]))?;
     check::<N>(lines.view_plane, "the view plane distance", description.view_plane.abs())?;

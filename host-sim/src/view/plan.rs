@@ -16,7 +16,8 @@ use microtrace::optimize::bounding_volume::ObjectGeometry;
 use microtrace::optimize::bounding_volume::View;
 use microtrace::optimize::projection::Polygon;
 use microtrace::optimize::{sortlist, window_corners};
-use microtrace::config::{Config, Index};
+use microtrace::config::Config;
+use microtrace::storage::Index;
 use microtrace::scene::Prepared;
 
 use super::colours::object_colour;
