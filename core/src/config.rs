@@ -47,6 +47,12 @@ pub trait Config: 'static {
     const GRID_ENTRIES_PER_OBJECT: usize;
     /// The deepest ray tree the render follows (a scene's deeper `depth` is cut here).
     const TREE_DEPTH: usize;
+
+    /// The grid's pool entries for a scene of `objects` objects (a table sized at run time is
+    /// made this long; an array keeps its length).
+    fn grid_entries(objects: usize) -> usize {
+        objects.saturating_mul(Self::GRID_ENTRIES_PER_OBJECT)
+    }
 }
 
 /// The grid's pool entries per object by default: an object may overlap this many cells on

@@ -6,8 +6,8 @@ use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use microtrace::pixel::FrameBuffer;
 use microtrace::render::{Pga, Statistics, Whole, render};
 use microtrace::model::Optimizations;
-use microtrace::scene::Scene;
-use microtrace_sim::scene_file::{self, HOST_MAX_OBJECTS};
+use microtrace_sim::scene_file;
+use microtrace_sim::heap::HostPrepared;
 
 fn renders(c: &mut Criterion) {
     let scenes = concat!(env!("CARGO_MANIFEST_DIR"), "/../scenes/");
@@ -18,7 +18,7 @@ fn renders(c: &mut Criterion) {
         description.fit_to_size(132, 120);
         for (label, optimizations) in [("none", Optimizations::NONE), ("all", Optimizations::ALL)] {
             description.optimizations = optimizations;
-            let scene = Box::new(Scene::<f64, HOST_MAX_OBJECTS>::prepare(&*description).expect("prepare"));
+            let scene = Box::new(HostPrepared::<f64>::prepare(&*description).expect("prepare"));
             let (width, height) = (description.viewport.width(), description.viewport.height());
             let mut pixels = vec![0u8; usize::from(width) * usize::from(height)];
             group.bench_with_input(BenchmarkId::new(name, label), &scene, |b, scene| {
@@ -32,7 +32,7 @@ fn renders(c: &mut Criterion) {
         // Preprocess alone (the acceleration structures).
         description.optimizations = Optimizations::ALL;
         group.bench_function(BenchmarkId::new(name, "prepare"), |b| {
-            b.iter(|| Box::new(Scene::<f64, HOST_MAX_OBJECTS>::prepare(&*description).expect("prepare")))
+            b.iter(|| Box::new(HostPrepared::<f64>::prepare(&*description).expect("prepare")))
         });
     }
     group.finish();

@@ -3,6 +3,7 @@
 
 pub mod commands;
 pub mod files;
+pub mod heap;
 pub mod image_difference;
 pub mod number_type;
 pub mod parallel;

@@ -12,13 +12,13 @@ use microtrace::render::{PASSES, PassStatistics, Pga, Progressive, Rgb, Rows, St
 use microtrace::number::Number;
 use microtrace::model::SceneError;
 use microtrace::model::Viewport;
-use microtrace::scene::Scene;
 use microtrace::model::Palette;
 
 use microtrace::number::NumberKind;
 use crate::parallel::render_in_bands;
 use crate::progress::{Progress, ProgressReport};
-use crate::scene_file::{HostScene, HOST_MAX_OBJECTS};
+use crate::heap::HostPrepared;
+use crate::scene_file::HostScene;
 use microtrace::with_number_kind;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -65,14 +65,9 @@ impl Rendered {
     }
 }
 
-/// Prepares `scene` in the number type `N` straight into a heap allocation
-/// (`Scene::prepare_in_place` on a boxed `Scene::UNPREPARED`): a host scene is some 235 KB
-/// (f32) to 370 KB (f64), and `Box::new(Scene::prepare(..)?)` built it on the stack first and
-/// copied it, touching twice the memory (page faults are a visible part of a short render).
-pub fn prepare_boxed<N: Number>(scene: &HostScene) -> Result<Box<Scene<N, HOST_MAX_OBJECTS>>, SceneError> {
-    let mut prepared = Box::new(Scene::<N, HOST_MAX_OBJECTS>::UNPREPARED);
-    prepared.prepare_in_place(scene, &scene.objects)?;
-    Ok(prepared)
+/// Prepares `scene` in the number type `N`, every table on the heap and sized by the scene.
+pub fn prepare_host<N: Number>(scene: &HostScene) -> Result<HostPrepared<N>, SceneError> {
+    HostPrepared::<N>::prepare(scene)
 }
 
 /// Prepares and renders `scene` on this thread alone. With `progress` set, shows progress on a
@@ -101,7 +96,7 @@ pub fn render_scene_on_threads(
     // The scene error stays typed (not just its text) so callers can tell "out of range" apart.
     with_number_kind!(number, N => {
         let started = Instant::now();
-        let prepared = prepare_boxed::<N>(scene).map_err(anyhow::Error::new)?;
+        let prepared = prepare_host::<N>(scene).map_err(anyhow::Error::new)?;
         let preprocess = started.elapsed();
         let mut report = ProgressReport::new(height, progress.unwrap_or(""));
         report.enabled &= progress.is_some();
@@ -112,10 +107,10 @@ pub fn render_scene_on_threads(
                 let mut buffer = vec![0u8; pixel_count];
                 if single_threaded {
                     let frame = FrameBuffer::new(&mut buffer, width, height).expect("buffer sized to the viewport");
-                    render(&*prepared, Pga, Whole, &mut Progress::new(frame, &report), &mut statistics);
+                    render(&prepared, Pga, Whole, &mut Progress::new(frame, &report), &mut statistics);
                 } else {
                     statistics = render_in_bands(&mut buffer, width, threads, &report, |sink, rows, statistics| {
-                        render(&*prepared, Pga, Rows(rows), sink, statistics)
+                        render(&prepared, Pga, Rows(rows), sink, statistics)
                     })?;
                 }
                 Pixels::Pga(buffer)
@@ -124,10 +119,10 @@ pub fn render_scene_on_threads(
                 let mut buffer = vec![[0u8; 3]; pixel_count];
                 if single_threaded {
                     let frame = FrameBuffer::new(&mut buffer, width, height).expect("buffer sized to the viewport");
-                    render(&*prepared, Rgb, Whole, &mut Progress::new(frame, &report), &mut statistics);
+                    render(&prepared, Rgb, Whole, &mut Progress::new(frame, &report), &mut statistics);
                 } else {
                     statistics = render_in_bands(&mut buffer, width, threads, &report, |sink, rows, statistics| {
-                        render(&*prepared, Rgb, Rows(rows), sink, statistics)
+                        render(&prepared, Rgb, Rows(rows), sink, statistics)
                     })?;
                 }
                 Pixels::Rgb(buffer)
@@ -150,7 +145,7 @@ pub fn render_scene_progressive(scene: &HostScene, number: NumberKind, mode: Mod
     }
     with_number_kind!(number, N => {
         let started = Instant::now();
-        let prepared = prepare_boxed::<N>(scene).map_err(anyhow::Error::new)?;
+        let prepared = prepare_host::<N>(scene).map_err(anyhow::Error::new)?;
         let preprocess = started.elapsed();
         let mut report = ProgressReport::new(height.saturating_mul(PASSES as u16), progress.unwrap_or(""));
         report.enabled &= progress.is_some();
@@ -160,13 +155,13 @@ pub fn render_scene_progressive(scene: &HostScene, number: NumberKind, mode: Mod
             Mode::Pga => {
                 let mut buffer = vec![0u8; pixel_count];
                 let frame = FrameBuffer::new(&mut buffer, width, height).expect("buffer sized to the viewport");
-                render(&*prepared, Pga, Progressive, &mut Progress::new(frame, &report), &mut passes);
+                render(&prepared, Pga, Progressive, &mut Progress::new(frame, &report), &mut passes);
                 Pixels::Pga(buffer)
             }
             Mode::Rgb => {
                 let mut buffer = vec![[0u8; 3]; pixel_count];
                 let frame = FrameBuffer::new(&mut buffer, width, height).expect("buffer sized to the viewport");
-                render(&*prepared, Rgb, Progressive, &mut Progress::new(frame, &report), &mut passes);
+                render(&prepared, Rgb, Progressive, &mut Progress::new(frame, &report), &mut passes);
                 Pixels::Rgb(buffer)
             }
         };

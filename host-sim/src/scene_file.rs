@@ -6,12 +6,13 @@ use std::path::{Path, PathBuf};
 
 use anyhow::Context;
 use microtrace::model::SceneError;
-use microtrace::model::{Optimizations, SceneDescription};
+use microtrace::model::{Description, ObjectDescription, Optimizations};
 
-/// How many objects a host build holds (the firmware sizes this to each scene).
-pub const HOST_MAX_OBJECTS: usize = 512;
+use crate::heap::Growing;
 
-pub type HostScene = SceneDescription<HOST_MAX_OBJECTS>;
+/// A scene as written, its objects on the heap: as many as memory holds (the firmware's are
+/// sized to its scene).
+pub type HostScene = Description<Growing<ObjectDescription>>;
 
 /// A scene error with the file it is in: `FILE:line N: reason` (or `FILE: reason` for an error
 /// tied to no line), the one format of every parse and preparation error the command prints.
@@ -45,7 +46,7 @@ pub fn in_file(path: &Path, error: anyhow::Error) -> anyhow::Error {
 
 pub fn load(path: &Path) -> anyhow::Result<Box<HostScene>> {
     let text = std::fs::read(path).with_context(|| format!("cannot read scene {}", path.display()))?;
-    match microtrace::parser::parse::<HOST_MAX_OBJECTS>(&text) {
+    match microtrace::parser::parse_into_list(&text) {
         Ok(scene) => Ok(Box::new(scene)),
         Err(error) => Err(SceneFileError { path: path.to_owned(), error }.into()),
     }

@@ -8,12 +8,12 @@ use std::process::Command;
 
 use microtrace::formats;
 use microtrace::model::{SceneError, SceneErrorKind};
-use microtrace::parser::parse;
+use microtrace::parser::{parse, parse_into_list};
 use microtrace::pixel::FrameBuffer;
 use microtrace::model::Primitive;
-use microtrace::scene::Scene;
 use microtrace::number::NumberKind;
-use microtrace_sim::scene_file::{in_file, SceneFileError, HOST_MAX_OBJECTS};
+use microtrace_sim::scene_file::{in_file, SceneFileError};
+use microtrace_sim::heap::{Growing, HostPrepared};
 use microtrace::with_number_kind;
 
 #[allow(dead_code)]
@@ -182,7 +182,7 @@ fn rows() -> Vec<Row> {
 
 /// The library's message and error name for a scene row.
 fn scene_library(row: &Row) -> (String, String) {
-    let description = parse::<HOST_MAX_OBJECTS>(&row.input);
+    let description = parse_into_list::<Growing<_>>(&row.input);
     if row.place == "parse" {
         let error = description.expect_err(&format!("{row:?} parses"));
         let name = scene_variant(&error.kind).to_owned();
@@ -191,7 +191,7 @@ fn scene_library(row: &Row) -> (String, String) {
     let description = Box::new(description.unwrap_or_else(|error| panic!("{row:?} does not parse: {error}")));
     let number = row.place.strip_prefix("prepare ").unwrap();
     let number = NumberKind::from_name(number).unwrap();
-    let prepared = with_number_kind!(number, N => Scene::<N, HOST_MAX_OBJECTS>::prepare(&*description).map(|_| ()));
+    let prepared = with_number_kind!(number, N => HostPrepared::<N>::prepare(&*description).map(|_| ()));
     let error = prepared.expect_err(&format!("{row:?} prepares"));
     let name = scene_variant(&error.kind).to_owned();
     let message = format!("{:#}", in_file(Path::new("scene.mts"), anyhow::Error::new(error)));
@@ -252,10 +252,16 @@ fn every_row_of_the_bad_input_table_gives_its_message_and_every_error_has_a_row(
                 let error = formats::lut::decode_lut(&row.input).expect_err(&format!("{row:?} is a LUT"));
                 (format!("cannot read look-up table table.lut: {error}"), variant_name(format!("{:?}", error.kind)))
             }
+            "library" if row.error == "TooManyObjects" => {
+                // The host's lists grow; a build of fixed capacity (here 512) gives the error.
+                assert!(parse_into_list::<Growing<_>>(&row.input).is_ok());
+                let error = parse::<512>(&row.input).expect_err(&format!("{row:?} fits 512 objects"));
+                (error.to_string(), scene_variant(&error.kind).to_owned())
+            }
             "library" if row.error == "PrimitiveNotCompiled" => {
                 // Every primitive is compiled into the host, so the input parses and prepares;
                 // the error is the one a build without the primitive gives for it.
-                let description = parse::<HOST_MAX_OBJECTS>(&row.input).unwrap();
+                let description = parse_into_list::<Growing<_>>(&row.input).unwrap();
                 let object = &description.objects[0];
                 assert!(Primitive::ALL.iter().all(|p| p.is_compiled()));
                 let error = SceneError::new(object.line, SceneErrorKind::PrimitiveNotCompiled { primitive: object.primitive.name() });
@@ -264,10 +270,10 @@ fn every_row_of_the_bad_input_table_gives_its_message_and_every_error_has_a_row(
             "library" if row.error == "FeatureNotCompiled" => {
                 // The host has the ray tree, so the input parses and prepares; the error is the
                 // one a build without the `ray-tree` feature gives for it.
-                let description = parse::<HOST_MAX_OBJECTS>(&row.input).unwrap();
+                let description = parse_into_list::<Growing<_>>(&row.input).unwrap();
                 let object = &description.objects[0];
                 assert!(object.material.reflect > 0.0);
-                assert!(Scene::<f64, HOST_MAX_OBJECTS>::prepare(&description).is_ok());
+                assert!(HostPrepared::<f64>::prepare(&description).is_ok());
                 let error = SceneError::new(object.line, SceneErrorKind::FeatureNotCompiled { feature: "ray-tree", statement: "reflect" });
                 (error.to_string(), scene_variant(&error.kind).to_owned())
             }

@@ -100,17 +100,6 @@ impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: u
         shadow: [ShadowBound::UNSET; K],
         grid: Grid::UNSET,
     };
-
-    /// The thesis's `preprocess` for the optimizations (digest §8.2).
-    pub fn build(camera: &Camera<N>, optimizations: Optimizations, objects: &[ObjectDescription]) -> Self {
-        Self::build_with(camera, optimizations, objects, Tuning::IMPROVED)
-    }
-
-    pub fn build_with(camera: &Camera<N>, optimizations: Optimizations, objects: &[ObjectDescription], tuning: Tuning) -> Self {
-        let mut acceleration = Self::UNSET;
-        acceleration.rebuild(camera, optimizations, objects, tuning);
-        acceleration
-    }
 }
 
 impl<N: Number, C: Config<Number = N>> Acceleration<C> {
@@ -130,6 +119,17 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
             shadow: C::PerObject::filled(count, ShadowBound::UNSET),
             grid: Grid::inactive(count),
         }
+    }
+
+    /// The thesis's `preprocess` for the optimizations (digest §8.2).
+    pub fn build(camera: &Camera<N>, optimizations: Optimizations, objects: &[ObjectDescription]) -> Self {
+        Self::build_with(camera, optimizations, objects, Tuning::IMPROVED)
+    }
+
+    pub fn build_with(camera: &Camera<N>, optimizations: Optimizations, objects: &[ObjectDescription], tuning: Tuning) -> Self {
+        let mut acceleration = Self::unset(objects.len());
+        acceleration.rebuild(camera, optimizations, objects, tuning);
+        acceleration
     }
 
     /// [`Acceleration::build_with`] in place, so that the structures in a `static` (the

@@ -102,10 +102,9 @@ impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: u
 }
 
 impl<N: Number, C: Config<Number = N>> Grid<C> {
-    /// An inactive grid whose pool holds [`Config::GRID_ENTRIES_PER_OBJECT`] entries for each
-    /// of `objects`.
+    /// An inactive grid whose pool holds [`Config::grid_entries`] for `objects` objects.
     pub fn inactive(objects: usize) -> Self {
-        let entries = objects.saturating_mul(C::GRID_ENTRIES_PER_OBJECT);
+        let entries = C::grid_entries(objects);
         Self { cells: None, starts: [C::Index::default(); CELLS + 1], pool: C::GridPool::filled(entries, Entry::default()), depth: C::GridPool::filled(entries, -N::MAX) }
     }
 

@@ -114,26 +114,34 @@ pub(crate) fn render_antialiased<N, P, S, M, C: Config<Number = N>>(
             sampler.sample(x, y, statistics, cache)
         }
     };
-    let coverage_of = |y: u16| scene.optimizations.pixelbuffer.then(|| RowCoverage::<C>::of(scene, y));
+    // Each made once, and refilled for every corner row.
+    let refilled = |coverage: &mut Option<RowCoverage<C>>, y: u16| {
+        if let Some(coverage) = coverage.as_mut() {
+            coverage.refill(scene, y);
+        }
+    };
     let mut corners = C::CornerRow::filled(usize::from(width) + 1, [0; 3]);
     let top = corners.slots_mut();
     let Some(first) = rows.clone().next() else { return };
-    let first_coverage = coverage_of(first * step);
+    let mut coverage = RowCoverage::<C>::for_scene(scene);
+    // The row above's coverage, for corners beyond the row's capacity (traced again).
+    let mut top_coverage = if usize::from(width) < top.len() { None } else { RowCoverage::<C>::for_scene(scene) };
+    refilled(&mut coverage, first * step);
     for (column, slot) in (0..=width).zip(top.iter_mut()) {
-        *slot = corner(column * step, first * step, &first_coverage, statistics, &mut cache);
+        *slot = corner(column * step, first * step, &coverage, statistics, &mut cache);
     }
     for row in rows {
         statistics.pixels += u64::from(width);
         let (y, below) = (row * step, (row + 1) * step);
-        let top_coverage = if usize::from(width) < top.len() { None } else { Some(coverage_of(y)) };
-        let coverage = coverage_of(below);
+        refilled(&mut top_coverage, y);
+        refilled(&mut coverage, below);
         let mut bottom_left = corner(0, below, &coverage, statistics, &mut cache);
         for column in 0..width {
             let x = column * step;
             // The top corners from the row above, or traced again beyond the row's capacity.
             let above = |index: u16, statistics: &mut Statistics, cache: &mut ShadowCache<C::Index>| match top.get(usize::from(index)) {
                 Some(kept) => *kept,
-                None => corner(index * step, y, top_coverage.as_ref().unwrap_or(&None), statistics, cache),
+                None => corner(index * step, y, &top_coverage, statistics, cache),
             };
             let top_left = above(column, statistics, &mut cache);
             let top_right = above(column + 1, statistics, &mut cache);

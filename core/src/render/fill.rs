@@ -127,10 +127,17 @@ impl<C: Config> RowCoverage<C> {
         Self { spans: C::PerObject::filled(objects, (0, 0)), count: 0, overflowed: false }
     }
 
-    pub(crate) fn of(scene: &Prepared<C>, row: u16) -> Self {
-        let mut coverage = Self::empty(scene.objects.len());
-        fill_volumes_rows(scene, &mut coverage, true, false, row..row.saturating_add(1));
-        coverage
+    /// With Pixelbuffer on, an empty coverage for the scene's objects, to be [`RowCoverage::refill`]ed
+    /// row after row (made once a render: on a host its room is allocated).
+    pub(crate) fn for_scene(scene: &Prepared<C>) -> Option<Self> {
+        scene.optimizations.pixelbuffer.then(|| Self::empty(scene.objects.len()))
+    }
+
+    /// The coverage of `row`, in place of the earlier row's.
+    pub(crate) fn refill(&mut self, scene: &Prepared<C>, row: u16) {
+        self.count = 0;
+        self.overflowed = false;
+        fill_volumes_rows(scene, self, true, false, row..row.saturating_add(1));
     }
 
     pub(crate) fn covers(&self, column: u16) -> bool {

@@ -135,12 +135,14 @@ fn trace_pass<N, P, S, M, C: Config<Number = N>>(
     }
     let camera = &scene.camera;
     let (width, height) = (camera.width(), camera.height());
-    let pixelbuffer = scene.optimizations.pixelbuffer;
     // In passes after the first, every other block of a row is the previous pass's on the rows
     // that pass traced.
     let step = usize::from(size);
+    let mut coverage = RowCoverage::<C>::for_scene(scene);
     for row in (0..height).step_by(step) {
-        let coverage = if pixelbuffer { Some(RowCoverage::<C>::of(scene, row)) } else { None };
+        if let Some(coverage) = coverage.as_mut() {
+            coverage.refill(scene, row);
+        }
         let block_height = size.min(height - row);
         for column in (0..width).step_by(step) {
             if !traced_in_pass(pass, column, row) {

@@ -59,8 +59,8 @@ pub(super) fn streamed<N, P, S, M, C: Config<Number = N>>(
             render_antialiased::<N, P, S, M, C>(scene, antialias, sink, statistics, 0..height, mode, culling)
         });
     }
-    let pixelbuffer = scene.optimizations.pixelbuffer;
     let mut cache = ShadowCache::default();
+    let mut coverage = RowCoverage::<C>::for_scene(scene);
     with_shadow_culling(scene, |culling| {
         let mut trace = |column: u16, row: u16, statistics: &mut Statistics, sink: &mut S| {
             let pixel = camera.pixel(column, row);
@@ -69,8 +69,8 @@ pub(super) fn streamed<N, P, S, M, C: Config<Number = N>>(
         };
         for row in 0..height {
             statistics.pixels += u64::from(width);
-            if pixelbuffer {
-                let mut coverage = RowCoverage::<C>::of(scene, row);
+            if let Some(coverage) = coverage.as_mut() {
+                coverage.refill(scene, row);
                 runs(coverage.sorted_spans(), width, |covered, from, to| {
                     if covered {
                         for column in from..to {

@@ -17,10 +17,10 @@ use microtrace::optimize::{Acceleration, Tuning};
 use microtrace::pixel::FrameBuffer;
 use microtrace::render::{Pga, Statistics, Whole, render};
 use microtrace::model::Optimizations;
-use microtrace::scene::Scene;
 
 use crate::files;
-use crate::scene_file::{self, HostScene, HOST_MAX_OBJECTS};
+use crate::scene_file::{self, HostScene};
+use crate::heap::HostPrepared;
 
 /// One measured render.
 #[derive(Clone, Debug)]
@@ -37,7 +37,7 @@ pub fn render_tuned(scene: &HostScene, optimizations: Optimizations, tuning: Tun
     let started = Instant::now();
     let mut bare = scene.clone();
     bare.optimizations = Optimizations::NONE;
-    let mut prepared = Box::new(Scene::<f64, HOST_MAX_OBJECTS>::prepare(&bare).map_err(|error| anyhow::anyhow!("{error}"))?);
+    let mut prepared = Box::new(HostPrepared::<f64>::prepare(&bare).map_err(|error| anyhow::anyhow!("{error}"))?);
     prepared.optimizations = optimizations;
     prepared.acceleration = Acceleration::build_with(&prepared.camera, optimizations, &scene.objects, tuning);
     let preprocess = started.elapsed();

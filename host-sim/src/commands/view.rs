@@ -25,13 +25,13 @@ use embedded_graphics_simulator::{OutputSettings, OutputSettingsBuilder, Simulat
 use microtrace::pixel::FrameBuffer;
 use microtrace::render::{PassStatistics, Pga, Progressive, Rgb, Statistics, Whole};
 use microtrace::model::{Antialias, Optimizations};
-use microtrace::scene::Scene;
 
 use crate::commands::render::statistics_table;
 use crate::files;
 use microtrace::number::NumberKind;
 use crate::rendering::{Mode, Pixels, Rendered};
-use crate::scene_file::{self, parse_optimizations, parse_size, parse_switch, HostScene, HOST_MAX_OBJECTS};
+use crate::scene_file::{self, parse_optimizations, parse_size, parse_switch, HostScene};
+use crate::heap::HostPrepared;
 use microtrace::with_number_kind;
 
 #[path = "../view/mod.rs"]
@@ -273,7 +273,7 @@ fn apply(action: Action, scene: &mut HostScene, settings: &mut Settings, path: &
 
 /// Whether the scene prepares in `number`, with the preparation error naming the file if not.
 fn prepares(scene: &HostScene, number: NumberKind, path: &Path) -> Result<(), scene_file::SceneFileError> {
-    let prepared = with_number_kind!(number, N => Scene::<N, HOST_MAX_OBJECTS>::prepare(scene).map(|_| ()));
+    let prepared = with_number_kind!(number, N => HostPrepared::<N>::prepare(scene).map(|_| ()));
     prepared.map_err(|error| scene_file::SceneFileError { path: path.to_owned(), error })
 }
 
@@ -348,7 +348,7 @@ fn render(scene: &HostScene, settings: &Settings, display: &mut SimulatorDisplay
     let palette = scene.palette;
     with_number_kind!(settings.number, N => {
         let started = Instant::now();
-        let prepared = Box::new(Scene::<N, HOST_MAX_OBJECTS>::prepare(scene).map_err(|error| anyhow::anyhow!("{error}"))?);
+        let prepared = Box::new(HostPrepared::<N>::prepare(scene).map_err(|error| anyhow::anyhow!("{error}"))?);
         let preprocess = started.elapsed();
         // With antialiasing the optimizations serve the sample grid (`step` samples a pixel
         // side): its columns and rows are drawn at the pixels they fall in.

@@ -8,7 +8,8 @@ use embedded_graphics_simulator::SimulatorDisplay;
 use microtrace::number::Number;
 use microtrace::pixel::PixelSink;
 use microtrace::render::fill_volumes;
-use microtrace::scene::Scene;
+use microtrace::config::Config;
+use microtrace::scene::Prepared;
 
 /// The tint of a marked pixel: the violet of the core's RGB-mode fill colour.
 const TINT: Rgb888 = Rgb888::new(112, 0, 255);
@@ -32,7 +33,7 @@ impl PixelSink<bool> for PixelbufferFill {
 impl PixelbufferFill {
     /// Runs the core's fill for `scene` (flood: unmarked, fill: marked), whether or not the
     /// scene has Pixelbuffer on: what the fill would mark.
-    pub fn record<N: Number, const MAX_OBJECTS: usize>(scene: &Scene<N, MAX_OBJECTS>) -> Self {
+    pub fn record<N: Number, C: Config<Number = N>>(scene: &Prepared<C>) -> Self {
         let (width, height) = (scene.camera.width(), scene.camera.height());
         let mut fill = Self { width, height, marked: vec![false; usize::from(width) * usize::from(height)] };
         fill_volumes(scene, &mut fill, true, false);

@@ -17,10 +17,10 @@ use embedded_graphics::primitives::{PrimitiveStyle, Rectangle};
 use embedded_graphics_simulator::SimulatorDisplay;
 use microtrace::pixel::{ColourMap, FrameBuffer, LutColour, LutGrey, OrderedDither, RowDisplaySink};
 use microtrace::render::{Pga, Statistics, Whole};
-use microtrace::scene::Scene;
 
 use microtrace::number::NumberKind;
-use crate::scene_file::{HostScene, HOST_MAX_OBJECTS};
+use crate::scene_file::HostScene;
+use crate::heap::HostPrepared;
 use microtrace::with_number_kind;
 
 use super::sink::Borrowed;
@@ -128,7 +128,7 @@ where
     let frame = FrameBuffer::new(&mut buffer, width, height).expect("buffer sized to the viewport");
     let mut sink = RowDisplaySink::new(frame, target, map);
     with_number_kind!(number, N => {
-        let prepared = Box::new(Scene::<N, HOST_MAX_OBJECTS>::prepare(fitted).map_err(anyhow::Error::new)?);
+        let prepared = Box::new(HostPrepared::<N>::prepare(fitted).map_err(anyhow::Error::new)?);
         microtrace::render::render(&*prepared, Pga, Whole, &mut sink, &mut Statistics::default());
     });
     Ok(())
