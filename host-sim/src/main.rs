@@ -6,6 +6,10 @@ use microtrace_sim::commands;
 
 use clap::{Parser, Subcommand};
 
+/// Counts the heap's bytes for `bench --scale` (two relaxed atomics an allocation).
+#[global_allocator]
+static ALLOCATOR: microtrace_sim::allocation::Counting = microtrace_sim::allocation::Counting;
+
 #[derive(Parser)]
 #[command(name = "microtrace", version, about = "MicroTrace: the 1989 microcomputer ray tracer, re-created")]
 struct Cli {

@@ -1,10 +1,13 @@
 //! `microtrace bench`: `--thesis` reproduces the thesis's Tables 4.3 and 4.4 (the
-//! optimizations); `--numbers` reports speed against error for every number type.
+//! optimizations); `--numbers` reports speed against error for every number type; `--scale`
+//! how memory and time grow with the objects.
 
 use std::path::PathBuf;
 
 #[path = "bench_numbers.rs"]
 mod numbers;
+#[path = "bench_scale.rs"]
+mod scale;
 #[path = "bench_thesis.rs"]
 mod thesis;
 
@@ -16,6 +19,21 @@ pub struct BenchArgs {
     /// Speed against error for every number type.
     #[arg(long)]
     pub numbers: bool,
+    /// Memory and time against the number of objects: generated fields of spheres.
+    #[arg(long)]
+    pub scale: bool,
+    /// --scale: the sphere counts, comma-separated.
+    #[arg(long, value_delimiter = ',', default_value = "1000,10000,100000")]
+    pub counts: Vec<usize>,
+    /// --scale: the image size.
+    #[arg(long, value_parser = crate::scene_file::parse_size, default_value = "320x240")]
+    pub size: (u16, u16),
+    /// --scale: the number type.
+    #[arg(long, default_value = "f32")]
+    pub number: String,
+    /// --scale: also write each generated scene here, as spheres-COUNT.mts (to render or view).
+    #[arg(long, value_name = "DIR")]
+    pub scenes_out: Option<PathBuf>,
     /// Where the thesis scenes are.
     #[arg(long, default_value = "scenes")]
     pub scenes: PathBuf,
@@ -32,17 +50,21 @@ pub struct BenchArgs {
 }
 
 pub fn run(args: BenchArgs) -> anyhow::Result<()> {
-    if !args.thesis && !args.numbers {
-        anyhow::bail!("choose --thesis (optimizations, Tables 4.3 and 4.4) or --numbers (number types)");
+    let chosen = [args.thesis, args.numbers, args.scale].iter().filter(|on| **on).count();
+    if chosen == 0 {
+        anyhow::bail!("choose --thesis (optimizations, Tables 4.3 and 4.4), --numbers (number types) or --scale (memory and time against the objects)");
     }
-    if args.thesis && args.numbers && args.out.is_some() {
-        anyhow::bail!("--out names one report: run --thesis and --numbers separately to write both");
+    if chosen > 1 && args.out.is_some() {
+        anyhow::bail!("--out names one report: run --thesis, --numbers and --scale separately to write each");
     }
     if args.thesis {
         thesis::run(&args)?;
     }
     if args.numbers {
         numbers::run(&args)?;
+    }
+    if args.scale {
+        scale::run(&args)?;
     }
     Ok(())
 }
