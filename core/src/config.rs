@@ -36,6 +36,9 @@ pub trait Config: 'static {
     type GridPool<T: Copy>: Table<T>;
     /// The secondary rays' space grid's entries: `ENTRIES_PER_OBJECT` per object.
     type SpaceEntries: Table<Self::Index>;
+    /// The per-render lists of each object's blockers from the 128th object on, and where each
+    /// object's list starts (kept when [`Config::BLOCKER_LISTS`]).
+    type BlockerLists: Table<Self::Index>;
     /// The ray tree's stack of nodes: at most [`Config::TREE_DEPTH`].
     type TreeStack<T: Clone>: List<T>;
     /// One row of antialiasing corners: its length is how many the render keeps (the
@@ -47,6 +50,10 @@ pub trait Config: 'static {
     const GRID_ENTRIES_PER_OBJECT: usize;
     /// The deepest ray tree the render follows (a scene's deeper `depth` is cut here).
     const TREE_DEPTH: usize;
+    /// Whether a render lists each object's possible blockers beyond the first 128 (the
+    /// blocker sets' capacity), so that a shadow ray tests those instead of every object from
+    /// the 128th on: for scenes of thousands of objects, on a host (`render/shadow_tables.rs`).
+    const BLOCKER_LISTS: bool = false;
 
     /// The grid's pool entries for a scene of `objects` objects (a table sized at run time is
     /// made this long; an array keeps its length).
@@ -97,6 +104,7 @@ where
     type PerObjectList<T: Clone> = heapless::Vec<T, K>;
     type GridPool<T: Copy> = [[T; POOL]; K];
     type SpaceEntries = [[u16; SPACE_ENTRIES_PER_OBJECT]; K];
+    type BlockerLists = [u16; 0];
     type TreeStack<T: Clone> = heapless::Vec<T, DEPTH>;
     type CornerRow = [[u8; 3]; ROW];
     const MAX_OBJECTS: usize = K;

@@ -425,6 +425,21 @@ pub fn blocker_table<C: Config<Number = N>, N: Number>(footprints: &[LightReach<
     }
     let low_x = |index: usize| footprints.get(index).map_or(-N::MAX, |f| f.low(0));
     super::sortlist::sort_by_bound::<C, _>(order, low_x);
+    sweep(footprints, order, |blocker| blocker < BlockerSet::CAPACITY, |receiver, blocker| {
+        if let Some(set) = blockers.get_mut(receiver) {
+            set.insert(blocker);
+        }
+        true
+    });
+}
+
+/// The sweep of [`blocker_table`], over `order` sorted by the boxes' low x: calls
+/// `pair(receiver, blocker)` for every pair whose boxes meet where the blocker may shadow the
+/// receiver, for the blockers `wanted` (so that no test is spent on a pair not kept), until
+/// `pair` returns `false`. Its work is the pairs whose x ranges overlap: for objects spread
+/// over a plane, about n·√n.
+#[inline(always)]
+pub fn sweep<N: Number, I: Index>(footprints: &[LightReach<N>], order: &[I], wanted: impl Fn(usize) -> bool, mut pair: impl FnMut(usize, usize) -> bool) {
     for (position, &first) in order.iter().enumerate() {
         let Some(a) = footprints.get(first.get()) else { continue };
         for &second in order.iter().skip(position + 1) {
@@ -434,19 +449,12 @@ pub fn blocker_table<C: Config<Number = N>, N: Number>(footprints: &[LightReach<
             }
             let (i, j) = (first.get(), second.get());
             // `b.may_shadow(a)` and `a.may_shadow(b)`, their common part once.
-            let (b_shadows_a, a_shadows_b) = (j < BlockerSet::CAPACITY && b.near <= a.far, i < BlockerSet::CAPACITY && a.near <= b.far);
+            let (b_shadows_a, a_shadows_b) = (wanted(j) && b.near <= a.far, wanted(i) && a.near <= b.far);
             if !(b_shadows_a || a_shadows_b) || !a.meets(b) {
                 continue;
             }
-            if b_shadows_a {
-                if let Some(set) = blockers.get_mut(i) {
-                    set.insert(j);
-                }
-            }
-            if a_shadows_b {
-                if let Some(set) = blockers.get_mut(j) {
-                    set.insert(i);
-                }
+            if (b_shadows_a && !pair(i, j)) || (a_shadows_b && !pair(j, i)) {
+                return;
             }
         }
     }

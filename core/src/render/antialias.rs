@@ -57,7 +57,7 @@ fn differ(corners: &[Rgb; 4], threshold: u8) -> bool {
 struct Sampler<'a, 'c, N, M, C: Config> {
     scene: &'a Prepared<C>,
     mode: &'a M,
-    culling: &'a [ShadowCulling<'c, N>],
+    culling: &'a [ShadowCulling<'c, N, C::Index>],
 }
 
 impl<N: Number, M: Mode<N>, C: Config<Number = N>> Sampler<'_, '_, N, M, C> {
@@ -94,7 +94,7 @@ pub(crate) fn render_antialiased<N, P, S, M, C: Config<Number = N>>(
     statistics: &mut Statistics,
     rows: Range<u16>,
     mode: &M,
-    culling: &[ShadowCulling<'_, N>],
+    culling: &[ShadowCulling<'_, N, C::Index>],
 ) where
     N: Number,
     P: Copy,

@@ -27,7 +27,7 @@ pub(crate) fn direct_lighting<N: Number, C: Config<Number = N>>(
     power: u32,
     statistics: &mut Statistics,
     cache: &mut ShadowCache<C::Index>,
-    culling: &[ShadowCulling<'_, N>],
+    culling: &[ShadowCulling<'_, N, C::Index>],
 ) -> Lighting<N> {
     let at = Hit { scene, object, point, normal, view, power };
     let first = at.one_light(scene.light, statistics, &mut cache.last_blocker, culling.first().unwrap_or(&ShadowCulling::NONE));
@@ -56,7 +56,7 @@ impl<N: Number, C: Config<Number = N>> Hit<'_, N, C> {
     /// The first light's term scaled by its intensity plus the further lights' terms: out of
     /// line, so that a one-light scene's pixels carry none of it.
     #[inline(never)]
-    fn with_more_lights(&self, first: Lighting<N>, statistics: &mut Statistics, cache: &mut ShadowCache<C::Index>, culling: &[ShadowCulling<'_, N>]) -> Lighting<N> {
+    fn with_more_lights(&self, first: Lighting<N>, statistics: &mut Statistics, cache: &mut ShadowCache<C::Index>, culling: &[ShadowCulling<'_, N, C::Index>]) -> Lighting<N> {
         let scene = self.scene;
         let mut total = if scene.light_intensity != N::ONE { scaled(first, scene.light_intensity) } else { first };
         for ((source, last_blocker), index) in scene.more_lights.iter().zip(cache.more_blockers.iter_mut()).zip(1..) {
@@ -67,7 +67,7 @@ impl<N: Number, C: Config<Number = N>> Hit<'_, N, C> {
     }
 
     /// One light's diffuse and specular at the hit, times the share that reaches it.
-    fn one_light(&self, light: PreparedLight<N>, statistics: &mut Statistics, last_blocker: &mut Option<C::Index>, culling: &ShadowCulling<'_, N>) -> Lighting<N> {
+    fn one_light(&self, light: PreparedLight<N>, statistics: &mut Statistics, last_blocker: &mut Option<C::Index>, culling: &ShadowCulling<'_, N, C::Index>) -> Lighting<N> {
         let (to_light, light_distance) = match light {
             PreparedLight::Point(position) => {
                 let offset = position - self.point;

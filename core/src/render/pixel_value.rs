@@ -37,7 +37,7 @@ fn shade_pixel_cached<N: Number, C: Config<Number = N>>(
     pixel: PixelPosition,
     statistics: &mut Statistics,
     cache: &mut ShadowCache<C::Index>,
-    culling: &[ShadowCulling<'_, N>],
+    culling: &[ShadowCulling<'_, N, C::Index>],
 ) -> ShadedPixel<N> {
     primary_surface_then(scene, pixel, statistics, cache, culling, |_, material, lighting, _, _| ShadedPixel::Surface { material: *material, lighting })
         .unwrap_or(ShadedPixel::Background)
@@ -55,7 +55,7 @@ pub(crate) fn primary_surface_then<N: Number, R, C: Config<Number = N>>(
     pixel: PixelPosition,
     statistics: &mut Statistics,
     cache: &mut ShadowCache<C::Index>,
-    culling: &[ShadowCulling<'_, N>],
+    culling: &[ShadowCulling<'_, N, C::Index>],
     then: impl FnOnce(&SurfacePoint<N>, &PreparedMaterial<N>, Lighting<N>, &mut Statistics, &mut ShadowCache<C::Index>) -> R,
 ) -> Option<R> {
     let ray = scene.camera.primary_ray(pixel)?;
@@ -79,7 +79,7 @@ pub(crate) fn pixel_value<N, M, C: Config<Number = N>>(
     pixel: PixelPosition,
     statistics: &mut Statistics,
     cache: &mut ShadowCache<C::Index>,
-    culling: &[ShadowCulling<'_, N>],
+    culling: &[ShadowCulling<'_, N, C::Index>],
 ) -> Option<M::Pixel>
 where
     N: Number,

@@ -115,7 +115,7 @@ fn trace_pass<N, P, S, M, C: Config<Number = N>>(
     statistics: &mut Statistics,
     pass: usize,
     cache: &mut ShadowCache<C::Index>,
-    culling: &[ShadowCulling<'_, N>],
+    culling: &[ShadowCulling<'_, N, C::Index>],
     background: P,
     mode: &M,
 ) where

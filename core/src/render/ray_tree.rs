@@ -50,7 +50,7 @@ pub(crate) struct TreeContext<'a, 'c, N, Colours, C: Config> {
     pub scene: &'a Prepared<C>,
     pub colours: &'a Colours,
     pub pixel: PixelPosition,
-    pub culling: &'a [ShadowCulling<'c, N>],
+    pub culling: &'a [ShadowCulling<'c, N, C::Index>],
 }
 
 /// The colour of the tree below the primary hit `root` (whose local term is `local`), or

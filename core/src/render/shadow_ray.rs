@@ -76,20 +76,42 @@ pub fn in_shadow_cached<N: Number, C: Config<Number = N>>(
 
 /// Per-render shadow culling data, indexed by object (empty slices: none).
 #[derive(Clone, Copy, Debug)]
-pub struct ShadowCulling<'a, N> {
+pub struct ShadowCulling<'a, N, I> {
     /// For a point light: each object's cone of directions from the light.
     pub light_cones: &'a [DirectionChord<N>],
     /// For each receiving object, the objects among the first 128 that may shadow it; objects
-    /// from 128 on are always candidates.
+    /// from 128 on are candidates unless `beyond` lists them.
     pub blockers: &'a [BlockerSet],
+    /// Where the host keeps them (`Config::BLOCKER_LISTS`): for each receiving object, the
+    /// objects from 128 on that may shadow it, in ascending order (`render/shadow_tables.rs`).
+    pub beyond: BlockersBeyond<'a, I>,
 }
 
-impl<N> ShadowCulling<'_, N> {
+/// The objects from 128 on that may shadow each receiver: receiver `r`'s are
+/// `entries[starts[r]..starts[r + 1]]` (empty `starts`: not kept, every one is a candidate).
+#[derive(Clone, Copy, Debug)]
+pub struct BlockersBeyond<'a, I> {
+    pub starts: &'a [I],
+    pub entries: &'a [I],
+}
+
+impl<'a, I: Index> BlockersBeyond<'a, I> {
+    pub const NONE: Self = Self { starts: &[], entries: &[] };
+
+    /// The receiver's list, or `None` when the lists are not kept.
+    #[inline]
+    pub fn of(&self, receiver: usize) -> Option<&'a [I]> {
+        let (start, end) = (self.starts.get(receiver)?, self.starts.get(receiver + 1)?);
+        self.entries.get(start.get()..end.get())
+    }
+}
+
+impl<N, I: Index> ShadowCulling<'_, N, I> {
     /// No culling: every object is a candidate.
-    pub const NONE: Self = Self { light_cones: &[], blockers: &[] };
+    pub const NONE: Self = Self { light_cones: &[], blockers: &[], beyond: BlockersBeyond::NONE };
 }
 
-impl<N> Default for ShadowCulling<'_, N> {
+impl<N, I: Index> Default for ShadowCulling<'_, N, I> {
     fn default() -> Self {
         Self::NONE
     }
@@ -106,7 +128,7 @@ pub fn in_shadow_culled<N: Number, C: Config<Number = N>>(
     light_distance: N,
     statistics: &mut Statistics,
     cache: &mut ShadowCache<C::Index>,
-    culling: &ShadowCulling<'_, N>,
+    culling: &ShadowCulling<'_, N, C::Index>,
 ) -> bool {
     blocked(scene, shaded_object, point, to_light, light_distance, statistics, &mut cache.last_blocker, culling)
 }
@@ -125,7 +147,7 @@ pub(crate) fn light_share<N: Number, C: Config<Number = N>>(
     light_distance: N,
     statistics: &mut Statistics,
     last_blocker: &mut Option<C::Index>,
-    culling: &ShadowCulling<'_, N>,
+    culling: &ShadowCulling<'_, N, C::Index>,
 ) -> N {
     #[cfg(feature = "ray-tree")]
     if scene.has_transparent_objects() {
@@ -144,7 +166,7 @@ fn transmitted<N: Number, C: Config<Number = N>>(
     to_light: Vector3<N>,
     light_distance: N,
     statistics: &mut Statistics,
-    culling: &ShadowCulling<'_, N>,
+    culling: &ShadowCulling<'_, N, C::Index>,
 ) -> N {
     statistics.shadow_rays += 1;
     let segment = ShadowSegment { ray: Ray { origin: point, direction: to_light }, interval: Interval::below(light_distance) };
@@ -185,7 +207,7 @@ fn blocked<N: Number, C: Config<Number = N>>(
     light_distance: N,
     statistics: &mut Statistics,
     last_blocker: &mut Option<C::Index>,
-    culling: &ShadowCulling<'_, N>,
+    culling: &ShadowCulling<'_, N, C::Index>,
 ) -> bool {
     statistics.shadow_rays += 1;
     let segment = ShadowSegment { ray: Ray { origin: point, direction: to_light }, interval: Interval::below(light_distance) };
@@ -221,6 +243,15 @@ fn blocked<N: Number, C: Config<Number = N>>(
                 }
             }
         }
+    }
+    if let (Some(_), Some(listed)) = (set, culling.beyond.of(shaded_object)) {
+        for index in listed.iter().map(|index| index.get()) {
+            if !skip(index) && candidate_meets(scene, &segment, cones, (from_light, quantized), index, statistics) {
+                *last_blocker = Some(C::Index::new(index));
+                return true;
+            }
+        }
+        return false;
     }
     let start = if set.is_some() { BlockerSet::CAPACITY } else { 0 };
     for index in start..scene.objects.len() {

@@ -6,12 +6,14 @@ use super::shadow_ray::ShadowCulling;
 use crate::model::MAX_LIGHTS;
 use crate::number::Number;
 #[cfg(feature = "acceleration-tables")]
-use crate::optimize::shadow_culling::{blocker_table, BlockerSet, DirectionChord, LightPosition, LightReach};
+use crate::optimize::shadow_culling::{blocker_table, sweep, BlockerSet, DirectionChord, LightPosition, LightReach};
+#[cfg(feature = "acceleration-tables")]
+use super::shadow_ray::BlockersBeyond;
 #[cfg(feature = "acceleration-tables")]
 use crate::light::PreparedLight;
 use crate::config::Config;
 #[cfg(feature = "acceleration-tables")]
-use crate::storage::Table;
+use crate::storage::{Index, Table};
 use crate::scene::Prepared;
 
 /// Runs `body` with the per-render shadow tables, one per light: for a point light each
@@ -23,17 +25,15 @@ use crate::scene::Prepared;
 #[cfg(feature = "acceleration-tables")]
 pub(crate) fn with_shadow_culling<N: Number, R, C: Config<Number = N>>(
     scene: &Prepared<C>,
-    body: impl FnOnce(&[ShadowCulling<'_, N>]) -> R,
+    body: impl FnOnce(&[ShadowCulling<'_, N, C::Index>]) -> R,
 ) -> R {
     let culls = scene.shadows && scene.acceleration.culls_shadows();
     let objects = if culls { scene.objects.len() } else { 0 };
     let mut light_cones = C::PerObject::<DirectionChord<N>>::filled(objects, DirectionChord::ALWAYS);
     let mut blockers = C::PerObject::<BlockerSet>::filled(objects, BlockerSet::EMPTY);
     let count = objects.min(light_cones.slots().len()).min(blockers.slots().len());
-    if culls {
-        build_shadow_tables::<N, C>(scene, scene.light, count, light_cones.slots_mut(), blockers.slots_mut());
-    }
-    let first = culling_of(scene.light, count, light_cones.slots(), blockers.slots());
+    let lists = if culls { build_shadow_tables::<N, C>(scene, scene.light, count, light_cones.slots_mut(), blockers.slots_mut()) } else { BlockerLists::none() };
+    let first = culling_of(scene.light, count, light_cones.slots(), blockers.slots(), &lists);
     if culls && !scene.more_lights.is_empty() {
         return with_more_lights_culling(scene, count, first, body);
     }
@@ -47,8 +47,8 @@ pub(crate) fn with_shadow_culling<N: Number, R, C: Config<Number = N>>(
 fn with_more_lights_culling<N: Number, R, C: Config<Number = N>>(
     scene: &Prepared<C>,
     count: usize,
-    first: ShadowCulling<'_, N>,
-    body: impl FnOnce(&[ShadowCulling<'_, N>]) -> R,
+    first: ShadowCulling<'_, N, C::Index>,
+    body: impl FnOnce(&[ShadowCulling<'_, N, C::Index>]) -> R,
 ) -> R {
     const MORE: usize = MAX_LIGHTS - 1;
     // One table of each light after the first, one after the other.
@@ -58,22 +58,110 @@ fn with_more_lights_culling<N: Number, R, C: Config<Number = N>>(
     if per_light == 0 {
         return body(&[first]);
     }
-    for ((source, cones), sets) in scene.more_lights.iter().zip(light_cones.slots_mut().chunks_mut(per_light)).zip(blockers.slots_mut().chunks_mut(per_light)) {
-        build_shadow_tables::<N, C>(scene, source.light, count, cones, sets);
+    let mut lists: [BlockerLists<C>; MORE] = core::array::from_fn(|_| BlockerLists::none());
+    for (((source, cones), sets), lists) in scene.more_lights.iter().zip(light_cones.slots_mut().chunks_mut(per_light)).zip(blockers.slots_mut().chunks_mut(per_light)).zip(lists.iter_mut()) {
+        *lists = build_shadow_tables::<N, C>(scene, source.light, count, cones, sets);
     }
     let mut culling = [ShadowCulling::default(); MAX_LIGHTS];
     culling[0] = first;
-    for (((slot, source), cones), sets) in culling.iter_mut().skip(1).zip(scene.more_lights.iter()).zip(light_cones.slots().chunks(per_light)).zip(blockers.slots().chunks(per_light)) {
-        *slot = culling_of(source.light, count, cones, sets);
+    for ((((slot, source), cones), sets), lists) in
+        culling.iter_mut().skip(1).zip(scene.more_lights.iter()).zip(light_cones.slots().chunks(per_light)).zip(blockers.slots().chunks(per_light)).zip(lists.iter())
+    {
+        *slot = culling_of(source.light, count, cones, sets, lists);
     }
     body(culling.get(..=scene.more_lights.len()).unwrap_or(&[]))
 }
 
 /// The culling of one light from its tables (only a point light has cones).
 #[cfg(feature = "acceleration-tables")]
-fn culling_of<'a, N: Number>(light: PreparedLight<N>, count: usize, light_cones: &'a [DirectionChord<N>], blockers: &'a [BlockerSet]) -> ShadowCulling<'a, N> {
+fn culling_of<'a, N: Number, C: Config<Number = N>>(
+    light: PreparedLight<N>,
+    count: usize,
+    light_cones: &'a [DirectionChord<N>],
+    blockers: &'a [BlockerSet],
+    lists: &'a BlockerLists<C>,
+) -> ShadowCulling<'a, N, C::Index> {
     let cone_count = if matches!(light, PreparedLight::Point(_)) { count } else { 0 };
-    ShadowCulling { light_cones: light_cones.get(..cone_count).unwrap_or(&[]), blockers: blockers.get(..count).unwrap_or(&[]) }
+    let beyond = BlockersBeyond { starts: lists.starts.slots(), entries: lists.entries.slots() };
+    ShadowCulling { light_cones: light_cones.get(..cone_count).unwrap_or(&[]), blockers: blockers.get(..count).unwrap_or(&[]), beyond }
+}
+
+/// The most blockers from the 128th object on that the lists keep for each object on average
+/// (4 bytes each, a light): past it, none are kept.
+#[cfg(feature = "acceleration-tables")]
+const BLOCKERS_PER_OBJECT_AT_MOST: usize = 32;
+
+/// Each object's blockers from the 128th object on, for [`Config::BLOCKER_LISTS`]
+/// ([`BlockersBeyond`]); empty (and nothing at all in an [`crate::config::Arrays`] build) when not kept.
+#[cfg(feature = "acceleration-tables")]
+pub(crate) struct BlockerLists<C: Config> {
+    starts: C::BlockerLists,
+    entries: C::BlockerLists,
+}
+
+#[cfg(feature = "acceleration-tables")]
+impl<C: Config> BlockerLists<C> {
+    fn none() -> Self {
+        Self { starts: C::BlockerLists::filled(0, C::Index::default()), entries: C::BlockerLists::filled(0, C::Index::default()) }
+    }
+
+    /// The lists from the footprints and their order by low x ([`blocker_table`]'s): the sweep
+    /// once to count each receiver's blockers, once to place them; each list then sorted, so a
+    /// shadow ray meets its candidates in object order as before. None kept (every object from
+    /// the 128th on a candidate, as without the lists) once the pairs pass
+    /// [`BLOCKERS_PER_OBJECT_AT_MOST`] an object: the counting sweep stops there, so a scene
+    /// whose bounds overlap widely pays little for lists it would not gain by (docs/scale.md).
+    fn of<N: Number>(reaches: &[LightReach<N>], order: &[C::Index]) -> Self {
+        let beyond = |blocker: usize| blocker >= BlockerSet::CAPACITY;
+        let count = reaches.len();
+        let budget = count.saturating_mul(BLOCKERS_PER_OBJECT_AT_MOST).min(C::Index::MAX);
+        let mut starts = C::BlockerLists::filled(count + 1, C::Index::default());
+        let places = starts.slots_mut();
+        if places.len() <= count {
+            return Self::none();
+        }
+        // Each receiver's count at its successor's place, then the running sums: its start.
+        let mut total = 0usize;
+        sweep(reaches, order, beyond, |receiver, _| {
+            if let Some(place) = places.get_mut(receiver + 1) {
+                *place = C::Index::new(place.get() + 1);
+            }
+            total += 1;
+            total <= budget
+        });
+        if total > budget {
+            return Self::none();
+        }
+        let mut sum = 0;
+        for place in places.iter_mut() {
+            sum += place.get();
+            *place = C::Index::new(sum);
+        }
+        let mut entries = C::BlockerLists::filled(total, C::Index::default());
+        let listed = entries.slots_mut();
+        // Each receiver's start moves on as its blockers are placed, ending at the next start.
+        sweep(reaches, order, beyond, |receiver, blocker| {
+            if let Some(place) = places.get_mut(receiver) {
+                if let Some(entry) = listed.get_mut(place.get()) {
+                    *entry = C::Index::new(blocker);
+                }
+                *place = C::Index::new(place.get() + 1);
+            }
+            true
+        });
+        places.copy_within(..count, 1);
+        if let Some(first) = places.first_mut() {
+            *first = C::Index::default();
+        }
+        for receiver in 0..count {
+            if let (Some(start), Some(end)) = (places.get(receiver), places.get(receiver + 1)) {
+                if let Some(list) = listed.get_mut(start.get()..end.get()) {
+                    list.sort_unstable();
+                }
+            }
+        }
+        Self { starts, entries }
+    }
 }
 
 /// The footprints and the blocker table of one light, out of line: the footprints (40 bytes an
@@ -86,7 +174,7 @@ fn build_shadow_tables<N: Number, C: Config<Number = N>>(
     count: usize,
     light_cones: &mut [DirectionChord<N>],
     blockers: &mut [BlockerSet],
-) {
+) -> BlockerLists<C> {
     let light = match light {
         PreparedLight::Point(position) => LightPosition::Point(position),
         PreparedLight::Direction(direction) => LightPosition::Direction(direction),
@@ -100,13 +188,19 @@ fn build_shadow_tables<N: Number, C: Config<Number = N>>(
         *reach = footprint.reach;
     }
     let mut order = C::PerObject::<C::Index>::filled(count, C::Index::default());
-    blocker_table::<C, N>(reaches.slots().get(..count).unwrap_or(&[]), order.slots_mut(), blockers);
+    let reaches = reaches.slots().get(..count).unwrap_or(&[]);
+    blocker_table::<C, N>(reaches, order.slots_mut(), blockers);
+    if C::BLOCKER_LISTS && count > BlockerSet::CAPACITY {
+        BlockerLists::of(reaches, order.slots().get(..count).unwrap_or(&[]))
+    } else {
+        BlockerLists::none()
+    }
 }
 
 #[cfg(not(feature = "acceleration-tables"))]
 pub(crate) fn with_shadow_culling<N: Number, R, C: Config<Number = N>>(
     _scene: &Prepared<C>,
-    body: impl FnOnce(&[ShadowCulling<'_, N>]) -> R,
+    body: impl FnOnce(&[ShadowCulling<'_, N, C::Index>]) -> R,
 ) -> R {
     body(&[])
 }
