@@ -244,7 +244,8 @@ fn blocked<N: Number, C: Config<Number = N>>(
             }
         }
     }
-    if let (Some(_), Some(listed)) = (set, culling.beyond.of(shaded_object)) {
+    // Only a `Config` that keeps the lists compiles this in (the firmware's does not).
+    if let (true, Some(_), Some(listed)) = (C::BLOCKER_LISTS, set, culling.beyond.of(shaded_object)) {
         for index in listed.iter().map(|index| index.get()) {
             if !skip(index) && candidate_meets(scene, &segment, cones, (from_light, quantized), index, statistics) {
                 *last_blocker = Some(C::Index::new(index));

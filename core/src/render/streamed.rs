@@ -60,8 +60,9 @@ pub(super) fn streamed<N, P, S, M, C: Config<Number = N>>(
         });
     }
     let mut cache = ShadowCache::default();
-    let mut coverage = RowCoverage::<C>::for_scene(scene);
     with_shadow_culling(scene, |culling| {
+        // Made here, not before the shadow tables: the tables' building is then off the stack.
+        let mut coverage = RowCoverage::<C>::for_scene(scene);
         let mut trace = |column: u16, row: u16, statistics: &mut Statistics, sink: &mut S| {
             let pixel = camera.pixel(column, row);
             let value = pixel_value::<N, M, C>(scene, mode, pixel, statistics, &mut cache, culling).unwrap_or(background);

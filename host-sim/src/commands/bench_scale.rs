@@ -84,7 +84,8 @@ fn report(rows: &[Measured], number: NumberKind, width: u16, height: u16) -> Str
         "A field of spheres on a floor (`host-sim/src/sphere_field.rs`), in perspective, one point light, \
          shadows on, every optimization on, `{}` at {width}x{height}, PGA mode, one thread. Bytes are the heap \
          the program's allocator counted (`host-sim/src/allocation.rs`): the same on any machine for the same \
-         build. Times are this machine's, one run each.\n",
+         build. Times are this machine's, one run each. What grows faster than the objects, and \
+         why: docs/plan-storage.md, \"Measured: 100,000 objects\".\n",
         number.name()
     );
     let _ = writeln!(text, "| spheres | description | prepared scene | render (over both) | peak | peak per sphere | parse | prepare | trace | primary tests per intersected pixel | shadow tests per shadow ray |");
