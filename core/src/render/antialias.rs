@@ -16,14 +16,13 @@
 //! the threshold test and the mean are integer arithmetic, the same in every number type. The
 //! pixel is the rounded mean; in PGA mode the look-up table's entry nearest it (scene format).
 
-use core::ops::Range;
-
 use heapless::Vec;
 
-use super::fill::RowCoverage;
+use super::coverage::RowCoverage;
 use super::mode::Mode;
 use super::pixel_value::primary_surface_then;
 use super::shadow_ray::{ShadowCache, ShadowCulling};
+use super::walk::{walk_image, Pixels, Walk};
 use super::Statistics;
 use crate::number::Number;
 use crate::pixel::PixelSink;
@@ -84,80 +83,139 @@ fn to_rgb<N: Number, C: Config<Number = N>>(colour: [N; 3], scene: &Prepared<C>)
     colour.map(|channel| (channel + scene.constants.half).floor_to_i32().clamp(0, 255) as u8)
 }
 
-/// Renders the image rows `rows` of an antialiased scene into `sink`, the pixels in the mode's
-/// values (`Mode::averaged`).
-#[allow(clippy::too_many_arguments)]
-pub(crate) fn render_antialiased<N, P, S, M, C: Config<Number = N>>(
-    scene: &Prepared<C>,
+/// The pixels of an antialiased image: each the mean of its corners, subdivided where they
+/// differ. A row of corners is kept from one image row to the next (the top corners of the
+/// next), and Pixelbuffer's fill applies to the corner rows (a corner outside it is the
+/// background with no ray).
+struct Antialiased<'a, 'c, C: Config, M> {
+    sampler: Sampler<'a, 'c, C::Number, M, C>,
     antialias: PreparedAntialias,
-    sink: &mut S,
-    statistics: &mut Statistics,
-    rows: Range<u16>,
-    mode: &M,
-    culling: &[ShadowCulling<'_, N, C::Index>],
-) where
-    N: Number,
-    P: Copy,
-    S: PixelSink<P>,
-    M: Mode<N, Pixel = P>,
-{
-    let sampler = Sampler::<N, M, C> { scene, mode, culling };
-    let (width, height) = (antialias.image.width(), antialias.image.height());
-    let step = antialias.step();
-    let rows = rows.start..rows.end.min(height);
-    let mut cache = ShadowCache::default();
-    // A corner row's sample, with Pixelbuffer's coverage of that row (uncovered: background).
-    let corner = |x: u16, y: u16, coverage: &Option<RowCoverage<C>>, statistics: &mut Statistics, cache: &mut ShadowCache<C::Index>| {
-        if coverage.as_ref().is_some_and(|coverage| !coverage.covers(x)) {
-            to_rgb(mode.background(), scene)
+    /// The corners above the row: the row of corners below the previous row.
+    top: C::CornerRow,
+    /// The fill of the row of corners below the row.
+    coverage: Option<RowCoverage<C>>,
+    /// The fill of the row of corners above, for the corners beyond the row's room (traced
+    /// again).
+    top_coverage: Option<RowCoverage<C>>,
+    bottom_left: Rgb,
+    cache: ShadowCache<C::Index>,
+    started: bool,
+}
+
+impl<C: Config, M: Mode<C::Number>> Antialiased<'_, '_, C, M> {
+    /// A corner row's sample, with the fill of that row (uncovered: the background).
+    fn corner(&mut self, x: u16, y: u16, below: bool, statistics: &mut Statistics) -> Rgb {
+        let coverage = if below { &mut self.coverage } else { &mut self.top_coverage };
+        if coverage.as_mut().is_some_and(|coverage| !coverage.covers(x)) {
+            to_rgb(self.sampler.mode.background(), self.sampler.scene)
         } else {
-            sampler.sample(x, y, statistics, cache)
+            self.sampler.sample(x, y, statistics, &mut self.cache)
         }
-    };
-    // Each made once, and refilled for every corner row.
-    let refilled = |coverage: &mut Option<RowCoverage<C>>, y: u16| {
+    }
+
+    fn refill(coverage: &mut Option<RowCoverage<C>>, scene: &Prepared<C>, y: u16) {
         if let Some(coverage) = coverage.as_mut() {
             coverage.refill(scene, y);
         }
-    };
-    let mut corners = C::CornerRow::filled(usize::from(width) + 1, [0; 3]);
-    let top = corners.slots_mut();
-    let Some(first) = rows.clone().next() else { return };
-    let mut coverage = RowCoverage::<C>::for_scene(scene);
-    // The row above's coverage, for corners beyond the row's capacity (traced again).
-    let mut top_coverage = if usize::from(width) < top.len() { None } else { RowCoverage::<C>::for_scene(scene) };
-    refilled(&mut coverage, first * step);
-    for (column, slot) in (0..=width).zip(top.iter_mut()) {
-        *slot = corner(column * step, first * step, &coverage, statistics, &mut cache);
     }
-    for row in rows {
-        statistics.pixels += u64::from(width);
-        let (y, below) = (row * step, (row + 1) * step);
-        refilled(&mut top_coverage, y);
-        refilled(&mut coverage, below);
-        let mut bottom_left = corner(0, below, &coverage, statistics, &mut cache);
-        for column in 0..width {
-            let x = column * step;
-            // The top corners from the row above, or traced again beyond the row's capacity.
-            let above = |index: u16, statistics: &mut Statistics, cache: &mut ShadowCache<C::Index>| match top.get(usize::from(index)) {
-                Some(kept) => *kept,
-                None => corner(index * step, y, &top_coverage, statistics, cache),
-            };
-            let top_left = above(column, statistics, &mut cache);
-            let top_right = above(column + 1, statistics, &mut cache);
-            let bottom_right = corner(x + step, below, &coverage, statistics, &mut cache);
-            let mean = pixel_mean(&sampler, Square { x, y, side: step, corners: [top_left, top_right, bottom_left, bottom_right], level: 0 }, antialias, statistics, &mut cache);
-            sink.set_pixel(column, row, mode.averaged(mean, antialias.image.x1 + column, antialias.image.y2 - row));
-            if let Some(slot) = top.get_mut(usize::from(column)) {
-                *slot = bottom_left;
+}
+
+impl<C: Config, M: Mode<C::Number>> Pixels<C> for Antialiased<'_, '_, C, M>
+where
+    M::Pixel: Copy,
+{
+    type Pixel = M::Pixel;
+    const ANTIALIASED: bool = true;
+
+    fn size(&self) -> (u16, u16) {
+        (self.antialias.image.width(), self.antialias.image.height())
+    }
+
+    fn begin_row(&mut self, row: u16, statistics: &mut Statistics) {
+        let (scene, step, width) = (self.sampler.scene, self.antialias.step(), self.antialias.image.width());
+        if !self.started {
+            // The first row's top corners.
+            self.started = true;
+            Self::refill(&mut self.coverage, scene, row * step);
+            for column in 0..=width {
+                let Some(_) = self.top.slots().get(usize::from(column)) else { break };
+                let corner = self.corner(column * step, row * step, true, statistics);
+                if let Some(slot) = self.top.slots_mut().get_mut(usize::from(column)) {
+                    *slot = corner;
+                }
             }
-            bottom_left = bottom_right;
         }
-        if let Some(slot) = top.get_mut(usize::from(width)) {
-            *slot = bottom_left;
-        }
-        sink.row_done(row);
+        let (y, below) = (row * step, (row + 1) * step);
+        Self::refill(&mut self.top_coverage, scene, y);
+        Self::refill(&mut self.coverage, scene, below);
+        self.bottom_left = self.corner(0, below, true, statistics);
     }
+
+    fn pixel(&mut self, column: u16, row: u16, statistics: &mut Statistics) -> M::Pixel {
+        let step = self.antialias.step();
+        let (x, y, below) = (column * step, row * step, (row + 1) * step);
+        // The top corners from the row above, or traced again beyond the row's room.
+        let above = |this: &mut Self, index: u16, statistics: &mut Statistics| match this.top.slots().get(usize::from(index)) {
+            Some(kept) => *kept,
+            None => this.corner(index * step, y, false, statistics),
+        };
+        let top_left = above(self, column, statistics);
+        let top_right = above(self, column + 1, statistics);
+        let bottom_right = self.corner(x + step, below, true, statistics);
+        let square = Square { x, y, side: step, corners: [top_left, top_right, self.bottom_left, bottom_right], level: 0 };
+        let mean = pixel_mean(&self.sampler, square, self.antialias, statistics, &mut self.cache);
+        if let Some(slot) = self.top.slots_mut().get_mut(usize::from(column)) {
+            *slot = self.bottom_left;
+        }
+        self.bottom_left = bottom_right;
+        let image = self.antialias.image;
+        self.sampler.mode.averaged(mean, image.x1 + column, image.y2 - row)
+    }
+
+    fn end_row(&mut self, _row: u16) {
+        let width = self.antialias.image.width();
+        if let Some(slot) = self.top.slots_mut().get_mut(usize::from(width)) {
+            *slot = self.bottom_left;
+        }
+    }
+}
+
+/// An antialiased scene in `walk`'s order: the image loop with [`Antialiased`] pixels and no
+/// coverage of its own (the pixels apply the fill to their corner rows). Out of line, so that
+/// the row of corners is not in a plain render's frame.
+#[allow(clippy::too_many_arguments)]
+#[inline(never)]
+pub(super) fn walk_antialiased<C, M, S, W>(
+    scene: &Prepared<C>,
+    mode: &M,
+    antialias: PreparedAntialias,
+    culling: &[ShadowCulling<'_, C::Number, C::Index>],
+    walk: &W,
+    counts: &mut W::Counts,
+    sink: &mut S,
+    background: M::Pixel,
+) where
+    C: Config,
+    M: Mode<C::Number>,
+    M::Pixel: Copy,
+    S: PixelSink<M::Pixel>,
+    W: Walk,
+{
+    let width = antialias.image.width();
+    let top = C::CornerRow::filled(usize::from(width) + 1, [0; 3]);
+    // The row above's coverage, for corners beyond the row's room (traced again).
+    let top_coverage = if usize::from(width) < top.slots().len() { None } else { RowCoverage::<C>::for_scene(scene) };
+    let mut pixels = Antialiased::<C, M> {
+        sampler: Sampler { scene, mode, culling },
+        antialias,
+        top,
+        coverage: RowCoverage::<C>::for_scene(scene),
+        top_coverage,
+        bottom_left: [0; 3],
+        cache: ShadowCache::default(),
+        started: false,
+    };
+    walk_image(scene, walk, counts, sink, &mut None::<RowCoverage<C>>, &mut pixels, background);
 }
 
 /// The area-weighted mean of one pixel, subdividing where its corners differ.

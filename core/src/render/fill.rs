@@ -7,11 +7,9 @@ use crate::number::Number;
 use crate::optimize::bounding_volume::ObjectGeometry;
 use crate::optimize::extents::Extent;
 use crate::optimize::pixelbuffer::hull_span;
-use crate::optimize::sortlist::{heapsort, INSERTION_SORT_BELOW};
 use crate::optimize::projection::Projected;
 use crate::pixel::PixelSink;
 use crate::config::Config;
-use crate::storage::Table;
 use crate::scene::Prepared;
 
 /// Pixelbuffer's fill colour in PGA mode (the thesis's default `fillcolor`); the flood is its
@@ -106,104 +104,6 @@ where
             if let Some((first, last)) = hull_span(&points, row, width) {
                 sink.mark_row(first, row, last - first + 1, fill);
             }
-        }
-    }
-}
-
-/// The Pixelbuffer's fill of one row, as spans: which of its pixels the normal render with
-/// Pixelbuffer traces (the rest hold the flood colour and become the background). Each object
-/// marks at most one span a row; should more come, the whole row counts as covered (a traced
-/// pixel outside the fill is the background anyway).
-pub(crate) struct RowCoverage<C: Config> {
-    spans: C::PerObject<(u16, u16)>,
-    count: usize,
-    overflowed: bool,
-}
-
-impl<C: Config> RowCoverage<C> {
-    /// No span yet: covers nothing (room for a span of each of `objects`).
-    #[inline(always)]
-    pub(crate) fn empty(objects: usize) -> Self {
-        Self { spans: C::PerObject::filled(objects, (0, 0)), count: 0, overflowed: false }
-    }
-
-    /// With Pixelbuffer on, an empty coverage for the scene's objects, to be [`RowCoverage::refill`]ed
-    /// row after row (made once a render: on a host its room is allocated).
-    pub(crate) fn for_scene(scene: &Prepared<C>) -> Option<Self> {
-        scene.optimizations.pixelbuffer.then(|| Self::empty(scene.objects.len()))
-    }
-
-    /// The coverage of `row`, in place of the earlier row's.
-    pub(crate) fn refill(&mut self, scene: &Prepared<C>, row: u16) {
-        self.count = 0;
-        self.overflowed = false;
-        fill_volumes_rows(scene, self, true, false, row..row.saturating_add(1));
-    }
-
-    pub(crate) fn covers(&self, column: u16) -> bool {
-        self.overflowed || self.spans.slots().iter().take(self.count).any(|&(first, width)| column >= first && column - first < width)
-    }
-
-    /// The spans sorted by their first column (an insertion sort when a row has a few, else a
-    /// heapsort), or `None`
-    /// when there were more than the coverage holds and the whole row counts as covered. For the
-    /// streamed render (`super::streamed`), which walks them once a row instead of testing each
-    /// pixel against every span.
-    pub(crate) fn sorted_spans(&mut self) -> Option<&[(u16, u16)]> {
-        if self.overflowed {
-            return None;
-        }
-        let spans = self.spans.slots_mut().get_mut(..self.count)?;
-        if C::MAX_OBJECTS >= INSERTION_SORT_BELOW && spans.len() >= INSERTION_SORT_BELOW {
-            // Equal starts may come in any order: `runs` merges them alike.
-            let len = spans.len();
-            heapsort(spans, len, |spans: &[(u16, u16)], i, j| matches!((spans.get(i), spans.get(j)), (Some(a), Some(b)) if a.0 < b.0), |spans: &mut [(u16, u16)], i, j| {
-                if i < spans.len() && j < spans.len() {
-                    spans.swap(i, j);
-                }
-            });
-            return Some(spans);
-        }
-        for next in 1..spans.len() {
-            let Some(&moving) = spans.get(next) else { break };
-            let mut slot = next;
-            while let Some(&before) = slot.checked_sub(1).and_then(|previous| spans.get(previous)) {
-                if before.0 <= moving.0 {
-                    break;
-                }
-                if let Some(place) = spans.get_mut(slot) {
-                    *place = before;
-                }
-                slot -= 1;
-            }
-            if let Some(place) = spans.get_mut(slot) {
-                *place = moving;
-            }
-        }
-        Some(spans)
-    }
-}
-
-impl<C: Config> PixelSink<bool> for RowCoverage<C> {
-    fn set_pixel(&mut self, x: u16, y: u16, filled: bool) {
-        self.mark_row(x, y, 1, filled);
-    }
-
-    fn fill_row(&mut self, x: u16, y: u16, width: u16, filled: bool) {
-        self.mark_row(x, y, width, filled);
-    }
-
-    /// The flood (`false`) comes first and covers nothing; each fill (`true`) is a span.
-    fn mark_row(&mut self, x: u16, _y: u16, width: u16, filled: bool) {
-        if !filled || width == 0 {
-            return;
-        }
-        match self.spans.slots_mut().get_mut(self.count) {
-            Some(span) => {
-                *span = (x, width);
-                self.count += 1;
-            }
-            None => self.overflowed = true,
         }
     }
 }

@@ -3,9 +3,9 @@
 
 #[cfg(feature = "antialias")]
 mod antialias;
+mod coverage;
 mod direct_lighting;
 mod fill;
-mod image;
 mod mode;
 mod order;
 mod pixel_value;
@@ -18,8 +18,8 @@ mod progressive;
 mod shadow_ray;
 mod shadow_tables;
 mod statistics;
-mod streamed;
 mod surface;
+mod walk;
 
 pub use primary::{nearest_hit, nearest_hit_cached, NearestHit};
 pub use order::{render, Order, Pass, Pga, PixelMode, Progressive, Rgb, Rows, Streamed, Whole};

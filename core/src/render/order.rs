@@ -19,10 +19,12 @@
 
 use core::ops::Range;
 
+use super::coverage::{ReadBack, RowCoverage};
 use super::fill::{PGA_FILL, PGA_FLOOD, RGB_FILL, RGB_FLOOD};
 use super::mode::{PgaNodes, RgbNodes};
-use super::progressive::{self, PassStatistics};
-use super::{image, streamed, Statistics};
+use super::progressive::PassStatistics;
+use super::walk::{render_walk, AllPasses, Band, OnePass};
+use super::Statistics;
 use crate::model::Rgb888;
 use crate::number::Number;
 use crate::pixel::{PixelSink, PixelSource};
@@ -97,9 +99,10 @@ where
     order.walk::<N, C>(scene, sink, counts);
 }
 
-/// The orders for one mode: its nodes, its background and Pixelbuffer's two marks.
+/// The orders for one mode: its nodes, its background and Pixelbuffer's two marks. Each is the
+/// one loop (`render/walk.rs`) with its walk and its coverage.
 macro_rules! orders {
-    ($mode:ty, $pixel:ty, $nodes:ident, $background:ident, $fill:expr, $flood:expr) => {
+    ($mode:ty, $pixel:ty, $nodes:ident, $background:ident, $marks:expr) => {
         impl<S: PixelSink<$pixel> + PixelSource<$pixel>> Order<$mode, S> for Whole {
             type Counts = Statistics;
 
@@ -114,7 +117,8 @@ macro_rules! orders {
 
             #[inline(always)]
             fn walk<N: Number, C: Config<Number = N>>(self, scene: &Prepared<C>, sink: &mut S, counts: &mut Statistics) {
-                image::render_rows::<N, $pixel, S, _, C>(scene, sink, counts, self.0, scene.$background(), ($fill, $flood), &$nodes { scene });
+                let rows = self.0.start..self.0.end.min(scene.camera.height());
+                render_walk(scene, &$nodes { scene }, Band(rows.clone()), counts, sink, scene.$background(), |sink| ReadBack::marked(scene, sink, rows, $marks));
             }
         }
 
@@ -123,7 +127,7 @@ macro_rules! orders {
 
             #[inline(always)]
             fn walk<N: Number, C: Config<Number = N>>(self, scene: &Prepared<C>, sink: &mut S, counts: &mut Statistics) {
-                streamed::streamed::<N, $pixel, S, _, C>(scene, sink, counts, scene.$background(), &$nodes { scene });
+                render_walk(scene, &$nodes { scene }, Band(0..scene.camera.height()), counts, sink, scene.$background(), |_| RowCoverage::for_scene(scene));
             }
         }
 
@@ -132,7 +136,7 @@ macro_rules! orders {
 
             #[inline(always)]
             fn walk<N: Number, C: Config<Number = N>>(self, scene: &Prepared<C>, sink: &mut S, counts: &mut PassStatistics) {
-                progressive::progressive::<N, $pixel, S, _, C>(scene, sink, counts, scene.$background(), &$nodes { scene });
+                render_walk(scene, &$nodes { scene }, AllPasses, counts, sink, scene.$background(), |_| RowCoverage::for_scene(scene));
             }
         }
 
@@ -141,14 +145,14 @@ macro_rules! orders {
 
             #[inline(always)]
             fn walk<N: Number, C: Config<Number = N>>(self, scene: &Prepared<C>, sink: &mut S, counts: &mut Statistics) {
-                progressive::single_pass::<N, $pixel, S, _, C>(scene, sink, counts, self.0, scene.$background(), &$nodes { scene });
+                render_walk(scene, &$nodes { scene }, OnePass(self.0), counts, sink, scene.$background(), |_| RowCoverage::for_scene(scene));
             }
         }
     };
 }
 
-orders!(Pga, u8, PgaNodes, background_index, PGA_FILL, PGA_FLOOD);
-orders!(Rgb, Rgb888, RgbNodes, background_rgb, RGB_FILL, RGB_FLOOD);
+orders!(Pga, u8, PgaNodes, background_index, (PGA_FILL, PGA_FLOOD));
+orders!(Rgb, Rgb888, RgbNodes, background_rgb, (RGB_FILL, RGB_FLOOD));
 
 mod sealed {
     pub trait Sealed {}

@@ -1,4 +1,4 @@
-//! The streamed render against the framebuffer render: the same image and the same statistics,
+//! The image loop: the streamed render against the framebuffer render: the same image and the same statistics,
 //! on the thesis scenes at the firmware's 128x64, every combination of the optimizations, in
 //! several number types; and what the sink sees (each pixel once, rows in order, no marks).
 
@@ -10,7 +10,8 @@ use std::vec;
 use std::vec::Vec;
 
 use super::*;
-use crate::number::{Fixed, Fixed16, SoftFloat};
+use crate::number::{Fixed, Fixed16, Number, SoftFloat};
+use crate::render::coverage::RowCoverage;
 use crate::pixel::FrameBuffer;
 use crate::config::Arrays;
 use crate::render::{Pga, Rgb, Streamed, Whole, render};
@@ -199,29 +200,65 @@ fn rgb_streamed_equals_the_framebuffer_render() {
     }
 }
 
+/// The runs a row's coverage gives the loop, from column 0 to `width`.
+fn runs_of(coverage: &mut RowCoverage<Arrays<f32, 4>>, width: u16) -> Vec<(bool, u16, u16)> {
+    coverage.merge();
+    let mut seen = Vec::new();
+    let mut column = 0;
+    while column < width {
+        let (covered, end) = coverage.run(column, width);
+        assert!(end > column, "a run must move on: {column} -> {end}");
+        seen.push((covered, column, end));
+        column = end;
+    }
+    seen
+}
+
 #[test]
 fn the_runs_merge_overlapping_and_touching_spans_and_fill_the_gaps() {
-    let mut coverage = RowCoverage::<Arrays<f32, 4>>::empty(4);
-    // Spans 10..20, 15..25, 25..30 (touching), 40..41, marked out of order.
-    for (first, width) in [(15, 10), (10, 10), (40, 1), (25, 5)] {
-        coverage.mark_row(first, 0, width, true);
-    }
-    let collect = |spans: Option<&[(u16, u16)]>, width: u16| {
-        let mut seen = Vec::new();
-        runs(spans, width, |covered, first, end| seen.push((covered, first, end)));
-        seen
+    let marked = |spans: &[(u16, u16)]| {
+        let mut coverage = RowCoverage::<Arrays<f32, 4>>::empty(4);
+        for &(first, width) in spans {
+            coverage.mark_row(first, 0, width, true);
+        }
+        coverage.merge();
+        coverage
     };
-    let spans = coverage.sorted_spans().map(<[_]>::to_vec);
-    assert_eq!(spans.as_deref(), Some(&[(10, 10), (15, 10), (25, 5), (40, 1)][..]));
-    assert_eq!(collect(spans.as_deref(), 128), [(false, 0, 10), (true, 10, 30), (false, 30, 40), (true, 40, 41), (false, 41, 128)]);
+    // Spans 10..20, 15..25, 25..30 (touching), 40..41, marked out of order.
+    let mut coverage = marked(&[(15, 10), (10, 10), (40, 1), (25, 5)]);
+    assert_eq!(coverage.spans(), Some(&[(10, 30), (40, 41)][..]));
+    assert_eq!(runs_of(&mut coverage, 128), [(false, 0, 10), (true, 10, 30), (false, 30, 40), (true, 40, 41), (false, 41, 128)]);
     // Clipped to the row; a span from column 0; a span past the row's end.
-    assert_eq!(collect(spans.as_deref(), 20), [(false, 0, 10), (true, 10, 20)]);
-    assert_eq!(collect(Some(&[(0, 5), (3, 4), (200, 3)]), 10), [(true, 0, 7), (false, 7, 10)]);
-    assert_eq!(collect(Some(&[]), 10), [(false, 0, 10)]);
-    assert_eq!(collect(None, 10), [(true, 0, 10)]);
+    assert_eq!(runs_of(&mut coverage, 20), [(false, 0, 10), (true, 10, 20)]);
+    assert_eq!(runs_of(&mut marked(&[(0, 5), (3, 4), (200, 3)]), 10), [(true, 0, 7), (false, 7, 10)]);
+    assert_eq!(runs_of(&mut marked(&[]), 10), [(false, 0, 10)]);
+    // Asked for columns with gaps between them (the progressive passes), the answers are each
+    // column's own.
+    let mut coverage = marked(&[(15, 10), (10, 10), (40, 1), (25, 5)]);
+    for column in (0..128).step_by(3) {
+        assert_eq!(coverage.covers(column), (10..30).contains(&column) || column == 40, "column {column}");
+    }
     // A fifth span does not fit: the whole row counts as covered.
-    coverage.mark_row(100, 0, 1, true);
-    assert_eq!(coverage.sorted_spans(), None);
+    let mut coverage = marked(&[(15, 10), (10, 10), (40, 1), (25, 5), (100, 1)]);
+    assert_eq!(coverage.spans(), None);
+    assert_eq!(runs_of(&mut coverage, 10), [(true, 0, 10)]);
+}
+
+#[test]
+fn the_progressive_columns_are_the_passes_pixels() {
+    for (pass, &size) in PASS_SIZES.iter().enumerate() {
+        for row in (0..40u16).step_by(usize::from(size)) {
+            let (first, step) = progressive_columns(pass, size, row);
+            let walked: Vec<u16> = (first..40).step_by(usize::from(step)).collect();
+            let traced: Vec<u16> = (0..40).filter(|&column| super::super::traced_in_pass(pass, column, row)).collect();
+            assert_eq!(walked, traced, "pass {pass}, row {row}");
+        }
+        for row in 0..40u16 {
+            if !row.is_multiple_of(size) {
+                assert!((0..40).all(|column| !super::super::traced_in_pass(pass, column, row)), "pass {pass}, row {row}");
+            }
+        }
+    }
 }
 
 #[test]
