@@ -104,6 +104,7 @@ struct Antialiased<'a, 'c, C: Config, M> {
 
 impl<C: Config, M: Mode<C::Number>> Antialiased<'_, '_, C, M> {
     /// A corner row's sample, with the fill of that row (uncovered: the background).
+    #[inline(always)]
     fn corner(&mut self, x: u16, y: u16, below: bool, statistics: &mut Statistics) -> Rgb {
         let coverage = if below { &mut self.coverage } else { &mut self.top_coverage };
         if coverage.as_mut().is_some_and(|coverage| !coverage.covers(x)) {
@@ -201,20 +202,22 @@ pub(super) fn walk_antialiased<C, M, S, W>(
     S: PixelSink<M::Pixel>,
     W: Walk,
 {
-    let width = antialias.image.width();
-    let top = C::CornerRow::filled(usize::from(width) + 1, [0; 3]);
-    // The row above's coverage, for corners beyond the row's room (traced again).
-    let top_coverage = if usize::from(width) < top.slots().len() { None } else { RowCoverage::<C>::for_scene(scene) };
+    let width = usize::from(antialias.image.width());
+    // The row of corners made in place (a move would copy it on the stack).
     let mut pixels = Antialiased::<C, M> {
         sampler: Sampler { scene, mode, culling },
         antialias,
-        top,
+        top: C::CornerRow::filled(width + 1, [0; 3]),
         coverage: RowCoverage::<C>::for_scene(scene),
-        top_coverage,
+        top_coverage: None,
         bottom_left: [0; 3],
         cache: ShadowCache::default(),
         started: false,
     };
+    // The row above's coverage, for corners beyond the row's room (traced again).
+    if width >= pixels.top.slots().len() {
+        pixels.top_coverage = RowCoverage::<C>::for_scene(scene);
+    }
     walk_image(scene, walk, counts, sink, &mut None::<RowCoverage<C>>, &mut pixels, background);
 }
 

@@ -27,14 +27,17 @@ pub(crate) fn with_shadow_culling<N: Number, R, C: Config<Number = N>>(
     scene: &Prepared<C>,
     body: impl FnOnce(&[ShadowCulling<'_, N, C::Index>]) -> R,
 ) -> R {
-    let culls = scene.shadows && scene.acceleration.culls_shadows();
-    let objects = if culls { scene.objects.len() } else { 0 };
+    if !(scene.shadows && scene.acceleration.culls_shadows()) {
+        // No tables (and, where the number type cannot cull, none in the frame).
+        return body(&[ShadowCulling::NONE]);
+    }
+    let objects = scene.objects.len();
     let mut light_cones = C::PerObject::<DirectionChord<N>>::filled(objects, DirectionChord::ALWAYS);
     let mut blockers = C::PerObject::<BlockerSet>::filled(objects, BlockerSet::EMPTY);
     let count = objects.min(light_cones.slots().len()).min(blockers.slots().len());
-    let lists = if culls { build_shadow_tables::<N, C>(scene, scene.light, count, light_cones.slots_mut(), blockers.slots_mut()) } else { BlockerLists::none() };
+    let lists = build_shadow_tables::<N, C>(scene, scene.light, count, light_cones.slots_mut(), blockers.slots_mut());
     let first = culling_of(scene.light, count, light_cones.slots(), blockers.slots(), &lists);
-    if culls && !scene.more_lights.is_empty() {
+    if !scene.more_lights.is_empty() {
         return with_more_lights_culling(scene, count, first, body);
     }
     body(&[first])
