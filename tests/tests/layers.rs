@@ -487,8 +487,8 @@ fn the_reader_finds_imports_through_reexports() {
     let imports = krate.imports();
     let file = |path: &str| krate.files.iter().position(|file| file.path == path).unwrap_or_else(|| panic!("no core/src/{path}"));
     for (from, expected) in [
-        ("render/image.rs", ["render/antialias.rs", "render/statistics.rs", "scene/prepared.rs", "pixel/mod.rs"]),
-        ("render/order.rs", ["render/image.rs", "render/statistics.rs", "model/colour.rs", "config.rs"]),
+        ("render/walk.rs", ["render/coverage.rs", "render/statistics.rs", "scene/prepared.rs", "pixel/mod.rs"]),
+        ("render/order.rs", ["render/walk.rs", "render/antialias.rs", "render/statistics.rs", "model/colour.rs", "config.rs"]),
     ] {
         for expected in expected {
             assert!(imports[file(from)].contains(&file(expected)), "{from} should import {expected}");

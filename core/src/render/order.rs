@@ -19,11 +19,15 @@
 
 use core::ops::Range;
 
-use super::coverage::{ReadBack, RowCoverage};
+#[cfg(feature = "antialias")]
+use super::antialias::walk_antialiased;
+use super::coverage::{Coverage, ReadBack, RowCoverage};
 use super::fill::{PGA_FILL, PGA_FLOOD, RGB_FILL, RGB_FLOOD};
-use super::mode::{PgaNodes, RgbNodes};
+use super::mode::{Mode, PgaNodes, RgbNodes};
 use super::progressive::PassStatistics;
-use super::walk::{render_walk, AllPasses, Band, OnePass};
+use super::shadow_ray::ShadowCache;
+use super::shadow_tables::with_shadow_culling;
+use super::walk::{walk_image, AllPasses, Band, OnePass, Plain, Walk};
 use super::Statistics;
 use crate::model::Rgb888;
 use crate::number::Number;
@@ -97,6 +101,39 @@ where
 {
     let _ = mode;
     order.walk::<N, C>(scene, sink, counts);
+}
+
+/// Renders `scene` in `walk`'s order into `sink`: the light's shadow tables made once, then each
+/// pass. `coverage` makes Pixelbuffer's coverage once the tables are made (so that its room is
+/// not held while they are built); an antialiased scene takes its own.
+#[inline(always)]
+fn render_walk<C, M, S, W, V>(
+    scene: &Prepared<C>,
+    mode: &M,
+    walk: W,
+    counts: &mut W::Counts,
+    sink: &mut S,
+    background: M::Pixel,
+    coverage: impl FnOnce(&mut S) -> V,
+) where
+    C: Config,
+    M: Mode<C::Number>,
+    M::Pixel: Copy,
+    S: PixelSink<M::Pixel>,
+    W: Walk,
+    V: Coverage<C, M::Pixel, S>,
+{
+    #[cfg(feature = "antialias")]
+    if let Some(antialias) = scene.antialias {
+        return with_shadow_culling(scene, |culling| {
+            walk_antialiased(scene, mode, antialias, culling, &walk, counts, sink, background)
+        });
+    }
+    with_shadow_culling(scene, |culling| {
+        let mut coverage = coverage(sink);
+        let mut pixels = Plain { scene, mode, culling, background, cache: ShadowCache::default() };
+        walk_image(scene, &walk, counts, sink, &mut coverage, &mut pixels, background);
+    })
 }
 
 /// The orders for one mode: its nodes, its background and Pixelbuffer's two marks. Each is the

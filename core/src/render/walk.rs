@@ -23,7 +23,6 @@ use super::mode::Mode;
 use super::pixel_value::pixel_value;
 use super::progressive::{PassStatistics, PASSES, PASS_SIZES};
 use super::shadow_ray::{ShadowCache, ShadowCulling};
-use super::shadow_tables::with_shadow_culling;
 use super::Statistics;
 use crate::config::Config;
 use crate::pixel::PixelSink;
@@ -141,39 +140,6 @@ where
         let pixel = self.scene.camera.pixel(column, row);
         pixel_value::<C::Number, M, C>(self.scene, self.mode, pixel, statistics, &mut self.cache, self.culling).unwrap_or(self.background)
     }
-}
-
-/// Renders `scene` in `walk`'s order into `sink`: the light's shadow tables made once, then each
-/// pass. `coverage` makes Pixelbuffer's coverage once the tables are made (so that its room is
-/// not held while they are built); an antialiased scene takes its own.
-#[inline(always)]
-pub(super) fn render_walk<C, M, S, W, V>(
-    scene: &Prepared<C>,
-    mode: &M,
-    walk: W,
-    counts: &mut W::Counts,
-    sink: &mut S,
-    background: M::Pixel,
-    coverage: impl FnOnce(&mut S) -> V,
-) where
-    C: Config,
-    M: Mode<C::Number>,
-    M::Pixel: Copy,
-    S: PixelSink<M::Pixel>,
-    W: Walk,
-    V: Coverage<C, M::Pixel, S>,
-{
-    #[cfg(feature = "antialias")]
-    if let Some(antialias) = scene.antialias {
-        return with_shadow_culling(scene, |culling| {
-            super::antialias::walk_antialiased(scene, mode, antialias, culling, &walk, counts, sink, background)
-        });
-    }
-    with_shadow_culling(scene, |culling| {
-        let mut coverage = coverage(sink);
-        let mut pixels = Plain { scene, mode, culling, background, cache: ShadowCache::default() };
-        walk_image(scene, &walk, counts, sink, &mut coverage, &mut pixels, background);
-    })
 }
 
 /// The first column pass `pass` (of block `size`) traces on `row`, and the step to the next:
