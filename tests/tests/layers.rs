@@ -488,7 +488,7 @@ fn the_reader_finds_imports_through_reexports() {
     let file = |path: &str| krate.files.iter().position(|file| file.path == path).unwrap_or_else(|| panic!("no core/src/{path}"));
     for (from, expected) in [
         ("render/walk.rs", ["render/coverage.rs", "render/statistics.rs", "scene/prepared.rs", "pixel/mod.rs"]),
-        ("render/order.rs", ["render/walk.rs", "render/antialias.rs", "render/statistics.rs", "model/colour.rs", "config.rs"]),
+        ("render/order.rs", ["render/walk.rs", "render/antialias.rs", "render/statistics.rs", "config.rs"]),
     ] {
         for expected in expected {
             assert!(imports[file(from)].contains(&file(expected)), "{from} should import {expected}");
