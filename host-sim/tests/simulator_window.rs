@@ -14,19 +14,11 @@ fn workspace() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).parent().expect("workspace root").to_path_buf()
 }
 
-/// Builds the `microtrace` binary and the window program `microtrace view` runs
-/// (`microtrace-view`, beside it), and returns the path of `microtrace`.
+/// The `microtrace` binary, built by cargo for this test with the window program
+/// `microtrace view` runs (`microtrace-view`, beside it: cargo builds every binary of the package
+/// for its integration tests, in the test's own profile).
 fn microtrace_binary() -> PathBuf {
-    let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
-    let status = Command::new(cargo)
-        .args(["build", "-q", "-p", "microtrace-sim", "--bin", "microtrace", "--bin", "microtrace-view"])
-        .current_dir(workspace())
-        .status()
-        .expect("run cargo build");
-    assert!(status.success(), "cargo build -p microtrace-sim failed");
-    let target = std::env::var_os("CARGO_TARGET_DIR").map(PathBuf::from).unwrap_or_else(|| workspace().join("target"));
-    let target = if target.is_absolute() { target } else { workspace().join(target) };
-    target.join("debug").join("microtrace")
+    PathBuf::from(env!("CARGO_BIN_EXE_microtrace"))
 }
 
 struct Xvfb(Child);
