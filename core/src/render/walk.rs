@@ -188,8 +188,9 @@ pub(crate) fn walk_image<C, S, W, V, K>(
         let rows = walk.rows(height);
         for row in (rows.start..rows.end.min(height)).step_by(usize::from(size)) {
             let (first, step) = if W::PROGRESSIVE && !K::ANTIALIASED { progressive_columns(pass, size, row) } else { (0, 1) };
-            if first < width {
-                statistics.pixels += u64::from((width - first - 1) / step + 1);
+            // The columns first, first + step, ... below the width (checked: no panic path).
+            if let Some(after_first) = (width.saturating_sub(first).saturating_sub(1)).checked_div(step).filter(|_| first < width) {
+                statistics.pixels += u64::from(after_first) + 1;
             }
             coverage.begin_row(scene, row);
             pixels.begin_row(row, statistics);
