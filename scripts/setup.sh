@@ -2,7 +2,8 @@
 # Installs what MicroTrace's builds and tests need, when it is missing: the Cortex-M rust
 # targets and llvm-tools (firmware), QEMU (firmware tests), SDL2 (the simulator window),
 # Xvfb (the window test without a display), flip-link (the real-board examples), cargo-fuzz
-# (the fuzz targets). Safe to run again; does nothing when all is there.
+# (the fuzz targets), Node.js and the rp2040js emulator (the Pico images run in
+# tests/tests/pico_emulated.rs). Safe to run again; does nothing when all is there.
 set -euo pipefail
 
 need_rustup=()
@@ -31,6 +32,8 @@ command -v qemu-system-arm >/dev/null || need_apt+=(qemu-system-arm)
 pkg-config --exists sdl2 2>/dev/null || need_apt+=(libsdl2-dev pkg-config)
 command -v Xvfb >/dev/null || need_apt+=(xvfb)
 command -v xwd >/dev/null || need_apt+=(x11-apps)
+command -v node >/dev/null || need_apt+=(nodejs)
+command -v npm >/dev/null || need_apt+=(npm)
 if [ ${#need_apt[@]} -gt 0 ]; then
   echo "setup: installing ${need_apt[*]}" >&2
   sudo_prefix=""
@@ -42,4 +45,12 @@ fi
 if ! cargo fuzz --version >/dev/null 2>&1; then
   echo "setup: installing cargo-fuzz" >&2
   cargo install --locked --quiet cargo-fuzz >&2
+fi
+
+# rp2040js (the RP2040 emulator, from the npm registry) at the version package-lock.json pins,
+# for the Pico images' emulated runs.
+rp2040="$(dirname "$0")/../tests/rp2040"
+if [ ! -f "$rp2040/node_modules/rp2040js/package.json" ]; then
+  echo "setup: npm ci in tests/rp2040 (rp2040js)" >&2
+  (cd "$rp2040" && npm ci --no-audit --no-fund --loglevel=error >&2)
 fi

@@ -5,7 +5,7 @@
 //! flash and RAM within the chip (2 MB flash, 264 KB RAM). An image linked without cortex-m-rt's
 //! `link.x` (the Pico example's state before: `.boot2` alone) fails these checks.
 //!
-//! No RP2040 emulation here: the images are checked, not run.
+//! Here the images are checked; `pico_emulated.rs` runs them in an RP2040 emulator.
 
 use xtask::example::{self, Example, ImageReport};
 
