@@ -3,7 +3,11 @@
 // sends to its display.
 //
 //   node run-pico.mjs <ssd1306|st7789> <elf> <bootrom> <out-prefix>
-//        [--max-cycles N] [--idle-cycles N] [--start rom|boot2] [--png-scale N] [--verbose]
+//        [--uf2 FILE] [--max-cycles N] [--idle-cycles N] [--start rom|boot2] [--png-scale N] [--verbose]
+//
+// With `--uf2 FILE` the flash is written from that UF2 file (the file a user drags onto the
+// Pico in BOOTSEL mode: 512-byte blocks, family RP2040, 256-byte payloads) instead of from the
+// ELF's loadable segments; the ELF still names functions in messages and decodes the log.
 //
 // The image boots from the boot ROM's reset vector (default, `--start rom`): the ROM checks the
 // chip-reset register and the QSPI chip-select strap, reads boot2 (256 bytes, CRC-checked) from
@@ -47,7 +51,7 @@ function usage(message) {
   if (message) process.stderr.write(`run-pico: ${message}\n`);
   process.stderr.write(
     'usage: node run-pico.mjs <ssd1306|st7789> <elf> <bootrom> <out-prefix> ' +
-      '[--max-cycles N] [--idle-cycles N] [--start rom|boot2] [--png-scale N] [--verbose]\n',
+      '[--uf2 FILE] [--max-cycles N] [--idle-cycles N] [--start rom|boot2] [--png-scale N] [--verbose]\n',
   );
   process.exit(2);
 }
@@ -66,7 +70,8 @@ function parseArgs(argv) {
       if (!Number.isFinite(n) || n <= 0) usage(`${arg} needs a positive number`);
       return n;
     };
-    if (arg === '--max-cycles') options.maxCycles = number();
+    if (arg === '--uf2') options.uf2 = value();
+    else if (arg === '--max-cycles') options.maxCycles = number();
     else if (arg === '--idle-cycles') options.idleCycles = number();
     else if (arg === '--png-scale') options.pngScale = Math.floor(number());
     else if (arg === '--start') {
@@ -84,6 +89,37 @@ function parseArgs(argv) {
 
 const hex = (n, digits = 8) => '0x' + (n >>> 0).toString(16).padStart(digits, '0');
 const hex2 = (n) => (n & 0xff).toString(16).padStart(2, '0');
+
+// ---------------------------------------------------------------------------------------------
+// UF2 (Microsoft's USB flashing format, as the RP2040's boot ROM takes it): 512-byte blocks,
+// each with its target address and up to 476 bytes of payload (256 for the RP2040)
+
+const UF2_MAGIC_START0 = 0x0a324655;
+const UF2_MAGIC_START1 = 0x9e5d5157;
+const UF2_MAGIC_END = 0x0ab16f30;
+const UF2_FLAG_FAMILY_ID = 0x00002000;
+const UF2_FAMILY_RP2040 = 0xe48bff56;
+
+// Writes every block's payload into `flashImage`; returns the number of blocks. Throws on a
+// block the RP2040's boot ROM would not take.
+function loadUf2(bytes, flashImage) {
+  if (bytes.length === 0 || bytes.length % 512 !== 0) throw new Error(`${bytes.length} bytes: not a whole number of 512-byte blocks`);
+  const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+  const count = bytes.length / 512;
+  for (let block = 0; block < count; block++) {
+    const at = block * 512;
+    const word = (offset) => view.getUint32(at + offset, true);
+    const where = `block ${block}`;
+    if (word(0) !== UF2_MAGIC_START0 || word(4) !== UF2_MAGIC_START1 || word(508) !== UF2_MAGIC_END) throw new Error(`${where}: bad magic numbers`);
+    if (!(word(8) & UF2_FLAG_FAMILY_ID) || word(28) !== UF2_FAMILY_RP2040) throw new Error(`${where}: not for the RP2040 family (flags ${hex(word(8))}, family ${hex(word(28))})`);
+    const [address, size, number, total] = [word(12), word(16), word(20), word(24)];
+    if (number !== block || total !== count) throw new Error(`${where}: numbered ${number} of ${total}, expected ${block} of ${count}`);
+    if (size !== 256 || address % 256 !== 0) throw new Error(`${where}: ${size} bytes at ${hex(address)}, not 256 at a 256-byte boundary`);
+    if (address < FLASH_BASE || address + size > FLASH_BASE + FLASH_SIZE) throw new Error(`${where}: ${hex(address)} is not in the 2 MB flash`);
+    flashImage.set(bytes.subarray(at + 32, at + 32 + size), address - FLASH_BASE);
+  }
+  return count;
+}
 
 // ---------------------------------------------------------------------------------------------
 // ELF32 (little-endian ARM): PT_LOAD segments by physical address, and the symbol table
@@ -844,7 +880,20 @@ function main() {
   const elf = parseElf(elfBytes);
   const flashImage = new Uint8Array(FLASH_SIZE).fill(0xff);
   const loaded = [];
-  for (const seg of elf.segments) {
+  if (args.uf2) {
+    let uf2Bytes;
+    try {
+      uf2Bytes = new Uint8Array(readFileSync(args.uf2));
+    } catch (e) {
+      fail(`cannot read the UF2 file ${args.uf2}: ${e.message}`);
+    }
+    try {
+      loaded.push({ uf2: args.uf2, blocks: loadUf2(uf2Bytes, flashImage) });
+    } catch (e) {
+      fail(`the UF2 file ${args.uf2}: ${e.message}`);
+    }
+  }
+  for (const seg of args.uf2 ? [] : elf.segments) {
     if (seg.type !== 1 /* PT_LOAD */ || seg.filesz === 0) continue;
     if (seg.paddr < FLASH_BASE || seg.paddr + seg.filesz > FLASH_BASE + FLASH_SIZE) {
       fail(`PT_LOAD segment at physical ${hex(seg.paddr)} (${seg.filesz} bytes) is not in the 2 MB flash`);

@@ -1,5 +1,7 @@
-//! The Raspberry Pi Pico examples' images run: each ELF (the bytes a user flashes) boots in the
-//! rp2040js emulator from the RP2040's boot ROM, through boot2, to its vector table, renders,
+//! The Raspberry Pi Pico examples' images run: each UF2 file (the bytes a user drags onto the
+//! Pico; `xtask::uf2`, written beside the ELF, which names the functions in the harness's
+//! messages) boots in the rp2040js emulator from the RP2040's boot ROM, through boot2, to its
+//! vector table, renders,
 //! and drives its display over the bus; the harness (`tests/rp2040/run-pico.mjs`) models the
 //! display on that bus and hands back what the display holds. Each picture must equal, bit for
 //! bit, the host's render of the same scene through the same display mapping (the core's
@@ -117,6 +119,8 @@ fn emulate(example: &Example, display: &str, output: &str, max_cycles: u64) -> R
     let result = Command::new("node")
         .arg(harness.join("run-pico.mjs"))
         .args([display, &elf.to_string_lossy(), &rom.to_string_lossy(), &prefix.to_string_lossy()])
+        .arg("--uf2")
+        .arg(example::uf2_path(&elf))
         .args(["--max-cycles", &max_cycles.to_string()])
         .output()
         .unwrap_or_else(|error| panic!("node (Node.js, which scripts/setup.sh installs): {error}"));
@@ -128,6 +132,7 @@ fn emulate(example: &Example, display: &str, output: &str, max_cycles: u64) -> R
         result.status,
         String::from_utf8_lossy(&result.stderr)
     );
+    assert!(number_in(&summary, "blocks").is_some_and(|blocks| blocks > 0), "the harness did not load the UF2 file:\n{summary}");
     let cycles = number_in(&summary, "cycles_to_last_display_byte").unwrap_or_else(|| panic!("no cycle count in:\n{summary}"));
     let path = PathBuf::from(format!("{}{output}", prefix.display()));
     let display = std::fs::read(&path).unwrap_or_else(|error| panic!("{}: {error}", path.display()));

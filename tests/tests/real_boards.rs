@@ -8,6 +8,7 @@
 //! Here the images are checked; `pico_emulated.rs` runs them in an RP2040 emulator.
 
 use xtask::example::{self, Example, ImageReport};
+use xtask::uf2;
 
 /// Builds the example and checks its image; returns the report.
 fn build_and_check(example: &Example, symbols: &[&str]) -> ImageReport {
@@ -17,7 +18,33 @@ fn build_and_check(example: &Example, symbols: &[&str]) -> ImageReport {
     let report = example::check_image(&bytes, example.chip, 16 * 1024, symbols)
         .unwrap_or_else(|problems| panic!("{}:\n  {}", elf.display(), problems.join("\n  ")));
     eprintln!("{}: {report:?}", example.folder);
+    uf2_holds_the_image(example, &elf, &bytes);
     report
+}
+
+/// The UF2 file beside the ELF (what a user drags onto the Pico in BOOTSEL mode): every block
+/// one the boot ROM takes (magic numbers, the RP2040's family, 256 bytes at a 256-byte boundary
+/// of the flash, numbered in order), and every byte the ELF loads is in it, at its load address.
+fn uf2_holds_the_image(example: &Example, elf: &std::path::Path, elf_bytes: &[u8]) {
+    let path = example::uf2_path(elf);
+    let file = std::fs::read(&path).unwrap_or_else(|error| panic!("{}: {error}", path.display()));
+    let blocks = uf2::blocks(&file, example.chip.uf2_family).unwrap_or_else(|problems| panic!("{}:\n  {}", path.display(), problems.join("\n  ")));
+    let pages: std::collections::BTreeMap<u64, Vec<u8>> = blocks.iter().cloned().collect();
+    assert_eq!(pages.len(), blocks.len(), "{}: a page written twice", path.display());
+    for (address, _) in &blocks {
+        assert!(example.chip.flash.contains(address), "{}: a block at 0x{address:08x}, outside the flash", path.display());
+    }
+    let mut loaded = 0;
+    for (address, bytes) in uf2::loadable(elf_bytes).unwrap() {
+        for (at, byte) in (address..).zip(bytes) {
+            let page = at - at % uf2::PAYLOAD_BYTES as u64;
+            let written = pages.get(&page).and_then(|payload| payload.get((at - page) as usize));
+            assert_eq!(written, Some(&byte), "{}: the byte at 0x{at:08x}", path.display());
+            loaded += 1;
+        }
+    }
+    assert!(loaded >= 16 * 1024, "{}: {loaded} bytes loaded", path.display());
+    eprintln!("{}: {} blocks for {loaded} bytes", path.display(), blocks.len());
 }
 
 /// The render is kilobytes of code, not a stub: the example's out-of-line `render` is linked,
@@ -57,7 +84,7 @@ fn the_check_fails_an_image_not_for_the_chip() {
     let elf = example::build(&example::PICO_SSD1306).unwrap_or_else(|error| panic!("{error}"));
     let bytes = std::fs::read(&elf).unwrap();
     // Wrong chip: the same image does not fit a chip whose flash and RAM are elsewhere.
-    let elsewhere = example::Chip { name: "elsewhere", flash: 0..0x4_0000, vector_table: 0, boot2: None, ram: 0x2000_0000..0x2001_0000 };
+    let elsewhere = example::Chip { name: "elsewhere", flash: 0..0x4_0000, vector_table: 0, boot2: None, ram: 0x2000_0000..0x2001_0000, uf2_family: 0 };
     let problems = example::check_image(&bytes, &elsewhere, 1024, &[]).unwrap_err();
     assert!(problems.iter().any(|problem| problem.contains("vector table is at 0x10000100")), "{problems:?}");
     assert!(problems.iter().any(|problem| problem.contains("not within the flash")), "{problems:?}");

@@ -1,9 +1,10 @@
 //! `cargo xtask firmware-example`: builds (does not run) the real-board examples in
-//! firmware/examples/ (each a cargo workspace of its own), and [`check_image`]: what the tests
-//! check in their ELFs (a complete image for the chip, not just a boot block).
+//! firmware/examples/ (each a cargo workspace of its own), each ELF with its UF2 file beside it
+//! (`crate::uf2`), and [`check_image`]: what the tests check in their ELFs (a complete image for
+//! the chip, not just a boot block).
 
 use std::ops::Range;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
 use object::{Object, ObjectSection, ObjectSymbol, SectionFlags, SectionKind};
@@ -37,6 +38,8 @@ pub struct Chip {
     pub boot2: Option<Range<u64>>,
     /// The RAM (the RP2040's 264 KB: four striped 64 KB banks and two 4 KB ones).
     pub ram: Range<u64>,
+    /// The family ID its boot ROM wants in a UF2 file.
+    pub uf2_family: u32,
 }
 
 pub const RP2040: Chip = Chip {
@@ -45,6 +48,7 @@ pub const RP2040: Chip = Chip {
     vector_table: 0x1000_0100,
     boot2: Some(0x1000_0000..0x1000_0100),
     ram: 0x2000_0000..0x2000_0000 + 264 * 1024,
+    uf2_family: crate::uf2::RP2040_FAMILY,
 };
 
 /// What [`check_image`] found in an ELF.
@@ -187,7 +191,13 @@ pub fn build_all() -> Result<Vec<PathBuf>, String> {
     EXAMPLES.iter().map(build).collect()
 }
 
-/// Builds the example in release mode and returns its ELF. Installs flip-link (the examples'
+/// The UF2 file beside an example's ELF.
+pub fn uf2_path(elf: &Path) -> PathBuf {
+    elf.with_extension("uf2")
+}
+
+/// Builds the example in release mode and returns its ELF, with its UF2 file written beside it
+/// ([`uf2_path`]: every loadable byte, in the chip's family). Installs flip-link (the examples'
 /// linker) when it is missing.
 pub fn build(example: &Example) -> Result<PathBuf, String> {
     crate::setup::ensure_rust_target(EXAMPLE_TARGET)?;
@@ -209,5 +219,10 @@ pub fn build(example: &Example) -> Result<PathBuf, String> {
     if !output.status.success() {
         return Err(format!("building the example {} failed:\n{}", example.folder, String::from_utf8_lossy(&output.stderr)));
     }
-    Ok(target_dir.join(EXAMPLE_TARGET).join("release").join(example.binary))
+    let elf = target_dir.join(EXAMPLE_TARGET).join("release").join(example.binary);
+    let bytes = std::fs::read(&elf).map_err(|error| format!("{}: {error}", elf.display()))?;
+    let uf2 = crate::uf2::from_elf(&bytes, example.chip.flash.clone(), example.chip.uf2_family).map_err(|error| format!("{}: no UF2 file: {error}", elf.display()))?;
+    let path = uf2_path(&elf);
+    std::fs::write(&path, uf2).map_err(|error| format!("{}: {error}", path.display()))?;
+    Ok(elf)
 }

@@ -15,6 +15,7 @@ pub mod oled;
 pub mod qemu;
 pub mod report;
 pub mod setup;
+pub mod uf2;
 
 use std::path::{Path, PathBuf};
 

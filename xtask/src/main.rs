@@ -41,7 +41,7 @@ fn main() {
         }
         Some("firmware-example") => xtask::example::build_all().map(|paths| {
             for path in paths {
-                println!("built {}", path.display());
+                println!("built {} and {}", path.display(), xtask::example::uf2_path(&path).display());
             }
         }),
         _ => Err(usage().to_owned()),
