@@ -195,3 +195,36 @@ fn progressive_renders_the_same_image_and_counts_each_pass() {
     let output = microtrace(&["render", "scenes/snooker.mts", "--progressive", "--threads", "2", "--stats"]);
     assert!(!output.status.success(), "--progressive with --threads is refused");
 }
+
+/// `render --display KIND` writes the picture the display shows: the window's preview of it,
+/// pixel for pixel (the same core path as the firmware's), black and white dots for the SSD1306,
+/// and the error diffusion (the default) other dots than the ordered dither.
+#[test]
+fn render_display_writes_the_displays_picture() {
+    use microtrace_sim::commands::view::ui::preview::{self, DisplayKind};
+    let directory = scratch("display");
+    let scene = microtrace_sim::scene_file::load(Path::new("../scenes/snooker.mts")).unwrap();
+    let mut pictures = Vec::new();
+    for (name, kind) in [("ssd1306", DisplayKind::Ssd1306), ("ssd1306-ordered", DisplayKind::Ssd1306Ordered), ("rgb565", DisplayKind::Rgb565)] {
+        let out = directory.join(format!("{name}.png"));
+        let output = microtrace(&["render", "scenes/snooker.mts", "--number", "f32", "--display", name, "--out", out.to_str().unwrap()]);
+        assert!(output.status.success(), "{name}: {}", text(&output.stderr));
+        let (width, height, written) = microtrace_sim::files::read_png_rgb(&out).unwrap();
+        let (display_width, display_height) = kind.size();
+        assert_eq!((width, height), (u32::from(display_width), u32::from(display_height)), "{name}");
+        let shown = preview::render(&scene, microtrace::number::NumberKind::F32, kind).unwrap();
+        let expected: Vec<[u8; 3]> = shown.pixels.iter().map(|colour| {
+            use embedded_graphics::pixelcolor::RgbColor;
+            [colour.r(), colour.g(), colour.b()]
+        }).collect();
+        assert!(written == expected, "{name}: the written picture differs from the preview");
+        if name.starts_with("ssd1306") {
+            assert!(written.iter().all(|dot| *dot == [0; 3] || *dot == [255; 3]), "{name}: not black and white");
+        }
+        pictures.push(written);
+    }
+    assert_ne!(pictures[0], pictures[1], "error diffusion drew the ordered dither's dots");
+    // A display picture is the only output: with another one it is refused.
+    let refused = microtrace(&["render", "scenes/snooker.mts", "--display", "ssd1306", "--out", directory.join("x.png").to_str().unwrap(), "--stats"]);
+    assert!(!refused.status.success());
+}

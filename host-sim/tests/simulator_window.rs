@@ -145,29 +145,61 @@ fn progressive_view_ends_with_the_same_image() {
     }
 }
 
-/// Each display preview (`--display oled|ssd1306|rgb565`, which `L` cycles) shows, pixel for
-/// pixel, the core's image of the scene fitted to that display through the firmware's mapping:
-/// the look-up table's grey (`grey_level`) on the 16-grey OLED, that grey through the 4x4
-/// ordered dither (`dither_lights`) on the 1-bit SSD1306, the look-up table's colour in RGB565
-/// (`lut_colour::<Rgb565>`) on the colour panel.
+/// A black-and-white picture in memory, for the error diffusion's expected dots.
+struct Dots {
+    width: u32,
+    lit: Vec<bool>,
+}
+
+impl embedded_graphics::prelude::OriginDimensions for Dots {
+    fn size(&self) -> embedded_graphics::prelude::Size {
+        embedded_graphics::prelude::Size::new(self.width, self.lit.len() as u32 / self.width)
+    }
+}
+
+impl embedded_graphics::prelude::DrawTarget for Dots {
+    type Color = embedded_graphics::pixelcolor::BinaryColor;
+    type Error = std::convert::Infallible;
+    fn draw_iter<I: IntoIterator<Item = embedded_graphics::Pixel<Self::Color>>>(&mut self, pixels: I) -> Result<(), Self::Error> {
+        for embedded_graphics::Pixel(point, colour) in pixels {
+            self.lit[(point.y as u32 * self.width + point.x as u32) as usize] = colour.is_on();
+        }
+        Ok(())
+    }
+}
+
+/// Each display preview (`--display oled|ssd1306|ssd1306-ordered|rgb565`, which `L` cycles)
+/// shows, pixel for pixel, the core's image of the scene fitted to that display through the
+/// firmware's mapping: the look-up table's grey (`grey_level`) on the 16-grey OLED; on the
+/// 1-bit SSD1306 the entry's 8-bit luma error-diffused (`ErrorDiffusion`, the dots in row
+/// order), or that grey through the 4x4 ordered dither (`dither_lights`); the look-up table's
+/// colour in RGB565 (`lut_colour::<Rgb565>`) on the colour panel.
 #[test]
 fn each_display_preview_shows_the_core_image_through_its_mapping() {
-    use embedded_graphics::pixelcolor::{GrayColor, Rgb565, Rgb888, RgbColor};
-    use embedded_graphics::prelude::Point;
-    use microtrace::pixel::{dither_lights, grey_level, lut_colour, FrameBuffer};
+    use embedded_graphics::pixelcolor::{Gray8, GrayColor, Rgb565, Rgb888, RgbColor};
+    use embedded_graphics::prelude::{DrawTarget, Point};
+    use microtrace::pixel::{dither_lights, grey_level, lut_colour, ErrorDiffusion, FrameBuffer};
     let Some((display, _xvfb)) = display_or_skip() else { return };
     let binary = microtrace_binary();
     for scene in ["snooker", "lattice"] {
         let text = std::fs::read(workspace().join("scenes").join(format!("{scene}.mts"))).unwrap();
         let mut description = microtrace::parser::parse::<64>(&text).unwrap();
         description.fit_to_size(132, 120);
-        for (kind, width, height, zoom) in [("oled", 128u16, 64u16, 2u32), ("ssd1306", 128, 64, 2), ("rgb565", 240, 240, 1)] {
+        for (kind, width, height, zoom) in [("oled", 128u16, 64u16, 2u32), ("ssd1306", 128, 64, 2), ("ssd1306-ordered", 128, 64, 2), ("rgb565", 240, 240, 1)] {
             let mut fitted = description.clone();
             fitted.fit_to_size(width, height);
             let prepared = microtrace::scene::Scene::<f64, 64>::prepare(&fitted).unwrap();
             let mut indices = vec![0u8; usize::from(width) * usize::from(height)];
             microtrace::render::render(&prepared, microtrace::render::Pga, microtrace::render::Whole, &mut FrameBuffer::new(&mut indices, width, height).unwrap(), &mut microtrace::render::Statistics::default());
             let palette = &fitted.palette;
+            // The diffused dots, each row's dots fed left to right, rows top first.
+            let mut diffused = ErrorDiffusion::<_, 128>::new(Dots { width: u32::from(width), lit: vec![false; indices.len()] });
+            let in_order = indices.iter().enumerate().map(|(i, index)| {
+                let point = Point::new((i % usize::from(width)) as i32, (i / usize::from(width)) as i32);
+                embedded_graphics::Pixel(point, Gray8::new(palette.entry(*index).luma8()))
+            });
+            diffused.draw_iter(in_order).unwrap();
+            let diffused = diffused.into_inner().lit;
             let expected: Vec<[u8; 3]> = indices
                 .iter()
                 .enumerate()
@@ -176,7 +208,8 @@ fn each_display_preview_shows_the_core_image_through_its_mapping() {
                     let grey = grey_level(palette, *index).luma();
                     match kind {
                         "oled" => [grey * 17; 3],
-                        "ssd1306" => if dither_lights(grey, point) { [255; 3] } else { [0; 3] },
+                        "ssd1306" => if diffused[i] { [255; 3] } else { [0; 3] },
+                        "ssd1306-ordered" => if dither_lights(grey, point) { [255; 3] } else { [0; 3] },
                         _ => {
                             let colour = Rgb888::from(lut_colour::<Rgb565>(palette, *index));
                             [colour.r(), colour.g(), colour.b()]

@@ -2,8 +2,9 @@
 //! through the core's `RowDisplaySink` into an in-memory display equals the host's image (the
 //! framebuffer of palette indices) through that path's mapping, pixel for pixel:
 //! - 4-bit grey (the lm3s6965evb's SSD0323 OLED): the LUT entry's Rec. 601 luma, 0..=15;
-//! - 1-bit ordered dither (the Pico's SSD1306): that grey level against the 4x4 matrix, white
-//!   all lit;
+//! - 1-bit ordered dither (the Pico's SSD1306 with its `ordered-dither` feature): that grey
+//!   level against the 4x4 matrix, white all lit (the error diffusion, the default, is tested
+//!   in `core/src/pixel/error_diffusion.rs`, the window test and the emulated Pico);
 //! - RGB565 (the Pico's ST7789): the LUT's 4-bit primaries scaled to 5/6/5 bits, rounded.
 //!
 //! And each finished row reaches the display as one `fill_contiguous` over the row, never as

@@ -8,7 +8,8 @@
 //! `RowDisplaySink` with the example's colour map):
 //! - `pico-ssd1306`: an SSD1306 at 0x3C on I2C0 (GP4, GP5), its command and data stream decoded
 //!   into the 128x64 page memory (byte `page * 128 + x`, bit `k` the dot at row `8 * page + k`,
-//!   1 lit);
+//!   1 lit), against the host's error-diffused dots (`LutLuma`, `ErrorDiffusion`: what
+//!   `microtrace render --display ssd1306` writes);
 //! - `pico-st7789`: an ST7789 on SPI0 with its DC pin, CASET/RASET/RAMWR decoded into a 240x240
 //!   RGB565 picture (each pixel big-endian, as sent).
 //!
@@ -26,7 +27,7 @@ use embedded_graphics::pixelcolor::raw::RawU16;
 use embedded_graphics::pixelcolor::{BinaryColor, Rgb565};
 use embedded_graphics::prelude::*;
 use microtrace::model::SceneDescription;
-use microtrace::pixel::{ColourMap, FrameBuffer, LutColour, LutGrey, OrderedDither, RowDisplaySink};
+use microtrace::pixel::{ColourMap, ErrorDiffusion, FrameBuffer, LutColour, LutLuma, RowDisplaySink};
 use microtrace::render::{render, Pga, Statistics, Whole};
 use microtrace::scene::Scene;
 use xtask::example::{self, Example};
@@ -157,7 +158,7 @@ fn the_pico_ssd1306_image_draws_the_host_picture_in_the_emulator() {
     report(&example::PICO_SSD1306, &run);
     assert_eq!(run.display.len(), 1024, "the page memory:\n{}", run.summary);
     let scene = snooker(width, height);
-    let expected = host_picture(&scene, OrderedDither(Picture::<BinaryColor>::new(width, height)), LutGrey::new(&scene.palette)).0;
+    let expected = host_picture(&scene, ErrorDiffusion::<_, 128>::new(Picture::<BinaryColor>::new(width, height)), LutLuma::new(&scene.palette)).into_inner();
     let lit = |x: usize, y: usize| run.display[(y / 8) * usize::from(width) + x] >> (y % 8) & 1 == 1;
     let mut differing = Vec::new();
     for (offset, want) in expected.pixels.iter().enumerate() {

@@ -82,7 +82,7 @@ pub fn from_elf(elf: &[u8], flash: Range<u64>, family: u32) -> Result<Vec<u8>, S
 /// RP2040's boot ROM would take it (magic numbers, the family, 256-byte payloads at 256-byte
 /// boundaries, blocks numbered in order with the right total). The problems name the block.
 pub fn blocks(uf2: &[u8], family: u32) -> Result<Vec<(u64, Vec<u8>)>, Vec<String>> {
-    if uf2.is_empty() || uf2.len() % BLOCK_BYTES != 0 {
+    if uf2.is_empty() || !uf2.len().is_multiple_of(BLOCK_BYTES) {
         return Err(vec![format!("{} bytes: not a whole number of {BLOCK_BYTES}-byte blocks", uf2.len())]);
     }
     let count = uf2.len() / BLOCK_BYTES;
@@ -102,7 +102,7 @@ pub fn blocks(uf2: &[u8], family: u32) -> Result<Vec<(u64, Vec<u8>)>, Vec<String
         if number != index || total != count {
             problem(format!("numbered {number} of {total}, expected {index} of {count}"));
         }
-        if size != PAYLOAD_BYTES || address as usize % PAYLOAD_BYTES != 0 {
+        if size != PAYLOAD_BYTES || !(address as usize).is_multiple_of(PAYLOAD_BYTES) {
             problem(format!("{size} bytes at 0x{address:08x}, expected {PAYLOAD_BYTES} at a {PAYLOAD_BYTES}-byte boundary"));
             continue;
         }

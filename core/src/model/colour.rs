@@ -37,6 +37,12 @@ impl Rgb4 {
     pub const fn luminance(self) -> u8 {
         ((299 * self.r as u32 + 587 * self.g as u32 + 114 * self.b as u32 + 500) / 1000) as u8
     }
+
+    /// The same luma on an 8-bit scale (0..=255, the channels times 17), rounded: the grey an
+    /// error-diffused 1-bit display reproduces (`pixel::ErrorDiffusion`).
+    pub const fn luma8(self) -> u8 {
+        ((17 * (299 * self.r as u32 + 587 * self.g as u32 + 114 * self.b as u32) + 500) / 1000) as u8
+    }
 }
 
 /// The 256-entry look-up table.

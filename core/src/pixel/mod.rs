@@ -14,6 +14,8 @@ mod colour_map;
 #[cfg(feature = "embedded-graphics")]
 mod draw_target;
 #[cfg(feature = "embedded-graphics")]
+mod error_diffusion;
+#[cfg(feature = "embedded-graphics")]
 mod grey;
 #[cfg(feature = "embedded-graphics")]
 mod ordered_dither;
@@ -27,7 +29,9 @@ pub use colour_map::{lut_colour, ColourMap, LutColour};
 #[cfg(feature = "embedded-graphics")]
 pub use draw_target::{DrawTargetSink, GreyDrawTargetSink};
 #[cfg(feature = "embedded-graphics")]
-pub use grey::{grey_level, LutGrey};
+pub use error_diffusion::{tone, ErrorDiffusion};
+#[cfg(feature = "embedded-graphics")]
+pub use grey::{grey_level, LutGrey, LutLuma};
 #[cfg(feature = "embedded-graphics")]
 pub use ordered_dither::{dither_colour, dither_lights, OrderedDither};
 #[cfg(feature = "embedded-graphics")]

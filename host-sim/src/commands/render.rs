@@ -12,6 +12,8 @@ use microtrace::number::NumberKind;
 use crate::rendering::{render_scene_on_threads, render_scene_progressive, Mode, Pixels, Rendered};
 use microtrace::render::PASS_SIZES;
 use crate::scene_file::{self, parse_optimizations, parse_size, parse_switch};
+use crate::commands::view::ui::preview::{self, DisplayKind};
+use embedded_graphics::pixelcolor::RgbColor;
 
 #[derive(clap::Args, Clone, Debug)]
 pub struct RenderArgs {
@@ -64,6 +66,11 @@ pub struct RenderArgs {
     /// then 4x4, 2x2 and every pixel (one thread). The same image; the statistics per pass.
     #[arg(long, conflicts_with = "threads")]
     pub progressive: bool,
+    /// Write, as --out, the picture a display the firmware drives shows: the scene fitted to the
+    /// display and each finished row sent through that display's mapping, as the firmware and the
+    /// real-board examples do (the window's display preview; docs/simulator.md).
+    #[arg(long, value_enum, value_name = "KIND", requires = "out", conflicts_with_all = ["pga", "rgb", "lut", "stats", "stats_json", "progressive", "size"])]
+    pub display: Option<DisplayKind>,
 }
 
 /// Parses a thread count of at least 1.
@@ -89,6 +96,12 @@ pub fn run(args: RenderArgs) -> anyhow::Result<()> {
     }
     let mut scene = scene_file::load(&args.scene)?;
     apply_overrides(&mut scene, &args);
+    if let (Some(kind), Some(path)) = (args.display, &args.out) {
+        let shown = preview::render(&scene, args.number, kind).map_err(|error| scene_file::in_file(&args.scene, error))?;
+        let (width, height) = kind.size();
+        let rgb: Vec<[u8; 3]> = shown.pixels.iter().map(|colour| [colour.r(), colour.g(), colour.b()]).collect();
+        return files::write_png_rgb(path, width, height, &rgb).with_context(|| format!("cannot write {}", path.display()));
+    }
     let label = format!("rendering {}", args.scene.display());
     let threads = args.threads.unwrap_or_else(default_threads);
     let rendered = if args.progressive {

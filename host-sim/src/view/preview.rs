@@ -6,8 +6,10 @@
 //!
 //! - the lm3s6965evb's 128x64 16-grey SSD0323 OLED: `LutGrey` (the look-up-table entry's luma,
 //!   `grey_level`, as the firmware's OLED rows), into a `Gray4` display;
-//! - a 128x64 1-bit SSD1306 (the Pico example): `LutGrey` through the core's `OrderedDither`
-//!   into a `BinaryColor` display, lit dots white;
+//! - a 128x64 1-bit SSD1306 (the Pico example): `LutLuma` (the entry's 8-bit luma) through the
+//!   core's `ErrorDiffusion` (its tone curve, then Floyd–Steinberg) into a `BinaryColor`
+//!   display, lit dots white; or, as the example's `ordered-dither` feature, `LutGrey` through
+//!   `OrderedDither`;
 //! - a 240x240 RGB565 panel (the Pico + ST7789 example): `LutColour<Rgb565>` into an `Rgb565`
 //!   display, shown as embedded-graphics converts RGB565 to 8 bits a primary.
 
@@ -15,7 +17,7 @@ use embedded_graphics::pixelcolor::{BinaryColor, Gray4, GrayColor, Rgb565, Rgb88
 use embedded_graphics::prelude::*;
 use embedded_graphics::primitives::{PrimitiveStyle, Rectangle};
 use embedded_graphics_simulator::SimulatorDisplay;
-use microtrace::pixel::{ColourMap, FrameBuffer, LutColour, LutGrey, OrderedDither, RowDisplaySink};
+use microtrace::pixel::{ColourMap, ErrorDiffusion, FrameBuffer, LutColour, LutGrey, LutLuma, OrderedDither, RowDisplaySink};
 use microtrace::render::{Pga, Statistics, Whole};
 
 use microtrace::number::NumberKind;
@@ -30,19 +32,22 @@ use super::sink::Borrowed;
 pub enum DisplayKind {
     /// The lm3s6965evb's 128x64 16-grey SSD0323 OLED.
     Oled,
-    /// A 128x64 black-and-white SSD1306, grey by 4x4 ordered dither.
+    /// A 128x64 black-and-white SSD1306, grey by error diffusion (the Pico example's default).
     Ssd1306,
+    /// The same SSD1306, grey by the 4x4 ordered dither (the example's `ordered-dither`).
+    Ssd1306Ordered,
     /// A 240x240 RGB565 colour panel (an ST7789).
     Rgb565,
 }
 
 impl DisplayKind {
-    pub const ALL: [DisplayKind; 3] = [DisplayKind::Oled, DisplayKind::Ssd1306, DisplayKind::Rgb565];
+    pub const ALL: [DisplayKind; 4] = [DisplayKind::Oled, DisplayKind::Ssd1306, DisplayKind::Ssd1306Ordered, DisplayKind::Rgb565];
 
     pub fn next(self) -> Self {
         match self {
             DisplayKind::Oled => DisplayKind::Ssd1306,
-            DisplayKind::Ssd1306 => DisplayKind::Rgb565,
+            DisplayKind::Ssd1306 => DisplayKind::Ssd1306Ordered,
+            DisplayKind::Ssd1306Ordered => DisplayKind::Rgb565,
             DisplayKind::Rgb565 => DisplayKind::Oled,
         }
     }
@@ -50,7 +55,7 @@ impl DisplayKind {
     /// The display's size in its pixels.
     pub fn size(self) -> (u16, u16) {
         match self {
-            DisplayKind::Oled | DisplayKind::Ssd1306 => (128, 64),
+            DisplayKind::Oled | DisplayKind::Ssd1306 | DisplayKind::Ssd1306Ordered => (128, 64),
             DisplayKind::Rgb565 => (240, 240),
         }
     }
@@ -58,7 +63,7 @@ impl DisplayKind {
     /// How many window pixels a display pixel is drawn as, each way.
     pub fn zoom(self) -> u32 {
         match self {
-            DisplayKind::Oled | DisplayKind::Ssd1306 => 2,
+            DisplayKind::Oled | DisplayKind::Ssd1306 | DisplayKind::Ssd1306Ordered => 2,
             DisplayKind::Rgb565 => 1,
         }
     }
@@ -77,7 +82,8 @@ impl DisplayKind {
     pub fn label(self) -> &'static str {
         match self {
             DisplayKind::Oled => "SSD0323 OLED 128x64, 16 grey",
-            DisplayKind::Ssd1306 => "SSD1306 128x64, 1-bit dither",
+            DisplayKind::Ssd1306 => "SSD1306 128x64, 1-bit diffused",
+            DisplayKind::Ssd1306Ordered => "SSD1306 128x64, 1-bit ordered",
             DisplayKind::Rgb565 => "RGB565 panel 240x240",
         }
     }
@@ -103,6 +109,11 @@ pub fn render(scene: &HostScene, number: NumberKind, kind: DisplayKind) -> anyho
             read_back(&display, width, height, |grey| Rgb888::new(grey.luma() * 17, grey.luma() * 17, grey.luma() * 17))
         }
         DisplayKind::Ssd1306 => {
+            let mut display = SimulatorDisplay::<BinaryColor>::new(size);
+            render_into(&fitted, number, ErrorDiffusion::<_, 128>::new(Borrowed(&mut display)), LutLuma::new(&palette))?;
+            read_back(&display, width, height, |dot| if dot.is_on() { Rgb888::WHITE } else { Rgb888::BLACK })
+        }
+        DisplayKind::Ssd1306Ordered => {
             let mut display = SimulatorDisplay::<BinaryColor>::new(size);
             render_into(&fitted, number, OrderedDither(Borrowed(&mut display)), LutGrey::new(&palette))?;
             read_back(&display, width, height, |dot| if dot.is_on() { Rgb888::WHITE } else { Rgb888::BLACK })

@@ -1,14 +1,20 @@
 //! MicroTrace on a real board: a Raspberry Pi Pico (RP2040, Cortex-M0+, no FPU) with an
 //! SSD1306 128x64 monochrome OLED on I2C0 (GP4 = SDA, GP5 = SCL, address 0x3C). It parses the
 //! thesis's snooker scene on the device, fits it to the display, renders it in `f32` and shows
-//! each finished band of 8 rows (one SSD1306 page), the palette's 16 grey levels (the OLED's
-//! grey mapping) ordered-dithered to black and white by the core's adapters. See README.md.
+//! each finished band of 8 rows (one SSD1306 page) in black and white by the core's adapters:
+//! each look-up-table entry's luma through a tone curve, error-diffused (Floyd–Steinberg,
+//! `ErrorDiffusion`, one row of errors in RAM); with the feature `ordered-dither`, the palette's
+//! 16 grey levels by the 4x4 ordered dither instead. See README.md.
 #![no_std]
 #![no_main]
 
 use defmt_rtt as _;
 use fugit::RateExtU32;
-use microtrace::pixel::{FrameBuffer, LutGrey, OrderedDither, PixelSink, PixelSource, RowDisplaySink};
+#[cfg(not(feature = "ordered-dither"))]
+use microtrace::pixel::{ErrorDiffusion, LutLuma};
+use microtrace::pixel::{FrameBuffer, PixelSink, PixelSource, RowDisplaySink};
+#[cfg(feature = "ordered-dither")]
+use microtrace::pixel::{LutGrey, OrderedDither};
 use microtrace::render::{Pga, Statistics, Whole};
 use microtrace::model::SceneDescription;
 use microtrace::scene::Scene;
@@ -75,7 +81,7 @@ fn main() -> ! {
         halt("framebuffer already taken")
     };
     let Some(frame) = FrameBuffer::new(pixels, WIDTH, HEIGHT) else { halt("framebuffer too small") };
-    let mut sink = Pages(RowDisplaySink::new(frame, OrderedDither(display), LutGrey::new(&scene.palette)));
+    let mut sink = Pages(RowDisplaySink::new(frame, dots(display), greys(&scene.palette)));
     let mut statistics = Statistics::default();
     defmt::info!("rendering {=u16}x{=u16}", WIDTH, HEIGHT);
     // The RP2040's 1 MHz timer times the render (what README.md's estimate is checked against).
@@ -97,7 +103,43 @@ fn render<S: PixelSink<u8> + PixelSource<u8>>(scene: &Scene<f32, MAX_OBJECTS>, s
 }
 
 type Oled<DI> = Ssd1306<DI, DisplaySize128x64, ssd1306::mode::BufferedGraphicsMode<DisplaySize128x64>>;
-type OledSink<'a, DI> = RowDisplaySink<'a, OrderedDither<Oled<DI>>, LutGrey<'a>>;
+type OledSink<'a, DI> = RowDisplaySink<'a, Dots<Oled<DI>>, Greys<'a>>;
+
+/// How grey becomes black and white: error diffusion (the default), one row of errors in RAM.
+#[cfg(not(feature = "ordered-dither"))]
+type Dots<D> = ErrorDiffusion<D, { WIDTH as usize }>;
+#[cfg(not(feature = "ordered-dither"))]
+type Greys<'a> = LutLuma<'a>;
+#[cfg(not(feature = "ordered-dither"))]
+fn dots<D>(display: D) -> Dots<D> {
+    ErrorDiffusion::new(display)
+}
+#[cfg(not(feature = "ordered-dither"))]
+fn greys(palette: &microtrace::model::Palette) -> Greys<'_> {
+    LutLuma::new(palette)
+}
+#[cfg(not(feature = "ordered-dither"))]
+fn display_of<D>(dots: &mut Dots<D>) -> &mut D {
+    dots.target_mut()
+}
+
+/// Or the 4x4 ordered dither of the 16 grey levels (feature `ordered-dither`).
+#[cfg(feature = "ordered-dither")]
+type Dots<D> = OrderedDither<D>;
+#[cfg(feature = "ordered-dither")]
+type Greys<'a> = LutGrey<'a>;
+#[cfg(feature = "ordered-dither")]
+fn dots<D>(display: D) -> Dots<D> {
+    OrderedDither(display)
+}
+#[cfg(feature = "ordered-dither")]
+fn greys(palette: &microtrace::model::Palette) -> Greys<'_> {
+    LutGrey::new(palette)
+}
+#[cfg(feature = "ordered-dither")]
+fn display_of<D>(dots: &mut Dots<D>) -> &mut D {
+    &mut dots.0
+}
 
 /// The core's row sink, plus sending the SSD1306's buffer after every 8th row (one page):
 /// the core sends each finished row to the driver's RAM copy, the driver sends pages on flush.
@@ -119,7 +161,7 @@ impl<DI: ssd1306::prelude::WriteOnlyDataCommand> PixelSink<u8> for Pages<'_, DI>
     fn row_done(&mut self, y: u16) {
         self.0.row_done(y);
         if y % 8 == 7 || y + 1 == HEIGHT {
-            let flushed = self.0.target.0.flush();
+            let flushed = display_of(&mut self.0.target).flush();
             if flushed.is_err() {
                 self.0.failed_rows = self.0.failed_rows.saturating_add(1);
             }
