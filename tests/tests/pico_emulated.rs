@@ -21,7 +21,6 @@
 //! without them the test fails and says which is missing.
 
 use std::path::{Path, PathBuf};
-use std::process::Command;
 
 use embedded_graphics::pixelcolor::raw::RawU16;
 use embedded_graphics::pixelcolor::{BinaryColor, Rgb565};
@@ -31,6 +30,7 @@ use microtrace::pixel::{ColourMap, ErrorDiffusion, FrameBuffer, LutColour, LutLu
 use microtrace::render::{render, Pga, Statistics, Whole};
 use microtrace::scene::Scene;
 use xtask::example::{self, Example};
+use xtask::pico::{self, EmulatedRun};
 
 fn workspace() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).parent().expect("the workspace").to_path_buf()
@@ -89,64 +89,13 @@ fn host_picture<D: DrawTarget, M: ColourMap<Color = D::Color>>(scene: &Scene<f32
     sink.target
 }
 
-/// What the emulated run left: the display's memory as the harness wrote it, and the cycles to
-/// the last display byte.
-struct Run {
-    display: Vec<u8>,
-    cycles: u64,
-    summary: String,
-}
-
-/// Builds `example`, runs its image in rp2040js with the `display` model, and returns what the
-/// display received. Fails naming what is missing (Node.js, rp2040js, the boot ROM) or what the
-/// harness saw go wrong (a fault, a run past `max_cycles`, nothing drawn).
-fn emulate(example: &Example, display: &str, output: &str, max_cycles: u64) -> Run {
-    let rom = workspace().join("../shared/rp2040/bootrom-b1.bin");
-    assert!(
-        rom.is_file(),
-        "{}: missing. The RP2040's boot ROM (revision B1, from Raspberry Pi's pico-bootrom, as rp2040js's demo ships it) must be beside the repository; see ../shared/rp2040/README.md",
-        rom.display()
-    );
-    let harness = workspace().join("tests/rp2040");
-    assert!(
-        harness.join("node_modules/rp2040js/package.json").is_file(),
-        "{}: rp2040js is not installed; run scripts/setup.sh (npm ci there)",
-        harness.display()
-    );
-    let elf = example::build(example).unwrap_or_else(|error| panic!("{error}"));
+/// Runs `example`'s UF2 file in rp2040js (`xtask::pico`), failing with the harness's message.
+fn emulate(example: &Example) -> EmulatedRun {
     let out = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("pico");
-    std::fs::create_dir_all(&out).unwrap();
-    let prefix = out.join(display);
-    let result = Command::new("node")
-        .arg(harness.join("run-pico.mjs"))
-        .args([display, &elf.to_string_lossy(), &rom.to_string_lossy(), &prefix.to_string_lossy()])
-        .arg("--uf2")
-        .arg(example::uf2_path(&elf))
-        .args(["--max-cycles", &max_cycles.to_string()])
-        .output()
-        .unwrap_or_else(|error| panic!("node (Node.js, which scripts/setup.sh installs): {error}"));
-    let summary = String::from_utf8_lossy(&result.stdout).into_owned();
-    assert!(
-        result.status.success(),
-        "{} in rp2040js failed ({}):\n{}\n{summary}",
-        example.folder,
-        result.status,
-        String::from_utf8_lossy(&result.stderr)
-    );
-    assert!(number_in(&summary, "blocks").is_some_and(|blocks| blocks > 0), "the harness did not load the UF2 file:\n{summary}");
-    let cycles = number_in(&summary, "cycles_to_last_display_byte").unwrap_or_else(|| panic!("no cycle count in:\n{summary}"));
-    let path = PathBuf::from(format!("{}{output}", prefix.display()));
-    let display = std::fs::read(&path).unwrap_or_else(|error| panic!("{}: {error}", path.display()));
-    Run { display, cycles, summary }
+    pico::run(example, &out).unwrap_or_else(|error| panic!("{error}"))
 }
 
-/// The number after `"key":` in the harness's JSON summary.
-fn number_in(summary: &str, key: &str) -> Option<u64> {
-    let after = summary.split(&format!("\"{key}\":")).nth(1)?;
-    after.trim_start().split(|c: char| !c.is_ascii_digit()).next()?.parse().ok()
-}
-
-fn report(example: &Example, run: &Run) {
+fn report(example: &Example, run: &EmulatedRun) {
     let at_125_mhz = run.cycles as f64 / 125e6;
     eprintln!("{}: {} emulated Cortex-M0+ cycles to the last display byte ({at_125_mhz:.3} s at 125 MHz)", example.folder, run.cycles);
 }
@@ -154,7 +103,7 @@ fn report(example: &Example, run: &Run) {
 #[test]
 fn the_pico_ssd1306_image_draws_the_host_picture_in_the_emulator() {
     let (width, height) = (128u16, 64u16);
-    let run = emulate(&example::PICO_SSD1306, "ssd1306", ".pages.bin", 400_000_000);
+    let run = emulate(&example::PICO_SSD1306);
     report(&example::PICO_SSD1306, &run);
     assert_eq!(run.display.len(), 1024, "the page memory:\n{}", run.summary);
     let scene = snooker(width, height);
@@ -176,7 +125,7 @@ fn the_pico_ssd1306_image_draws_the_host_picture_in_the_emulator() {
 #[test]
 fn the_pico_st7789_image_draws_the_host_picture_in_the_emulator() {
     let (width, height) = (240u16, 240u16);
-    let run = emulate(&example::PICO_ST7789, "st7789", ".rgb565", 3_000_000_000);
+    let run = emulate(&example::PICO_ST7789);
     report(&example::PICO_ST7789, &run);
     assert_eq!(run.display.len(), usize::from(width) * usize::from(height) * 2, "the panel's memory:\n{}", run.summary);
     let scene = snooker(width, height);

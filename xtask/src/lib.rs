@@ -12,6 +12,7 @@ pub mod example;
 pub mod firmware;
 pub mod grid_pool;
 pub mod oled;
+pub mod pico;
 pub mod qemu;
 pub mod report;
 pub mod setup;

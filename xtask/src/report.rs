@@ -7,7 +7,9 @@
 use std::path::PathBuf;
 
 use crate::budget;
+use crate::example;
 use crate::firmware::{self, Board, FirmwareOptions, Primitives, NUMBERS};
+use crate::pico;
 
 pub const START_MARKER: &str = "<!-- firmware-report:start -->";
 pub const END_MARKER: &str = "<!-- firmware-report:end -->";
@@ -56,6 +58,96 @@ pub struct ReportRun {
     /// Primary rays (with antialiasing, every corner and sub-corner ray) and the ray tree's.
     pub rays_traced: u64,
     pub secondary_rays: u64,
+}
+
+/// A real-board example's image (the UF2 file a user flashes) run in the rp2040js emulator
+/// (`crate::pico`): snooker in `f32` at its display's size, from reset to the last display byte.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ExampleRun {
+    /// The example's folder under firmware/examples/.
+    pub example: &'static str,
+    pub chip: &'static str,
+    pub core: &'static str,
+    pub width: u64,
+    pub height: u64,
+    /// Emulated cycles from reset (the boot ROM, boot2, parsing and preparing the scene
+    /// included) to the last byte sent to the display.
+    pub cycles: u64,
+    pub flash_bytes: u64,
+    pub static_ram_bytes: u64,
+}
+
+/// Every real-board example, run in rp2040js.
+fn example_runs() -> Result<Vec<ExampleRun>, String> {
+    let mut runs = Vec::new();
+    for example in example::EXAMPLES {
+        println!("[rp2040js] {} ...", example.folder);
+        let out = crate::firmware_dir().join("target/report/pico").join(example.folder);
+        let run = pico::run(&example, &out)?;
+        let elf = example::build(&example)?;
+        let bytes = std::fs::read(&elf).map_err(|error| format!("{}: {error}", elf.display()))?;
+        let image = example::check_image(&bytes, example.chip, 0, &[]).map_err(|problems| format!("{}: {}", elf.display(), problems.join("; ")))?;
+        let size = pico::emulation(&example).map_or((0, 0), |emulation| emulation.size);
+        println!("    {} cycles to the last display byte", run.cycles);
+        runs.push(ExampleRun {
+            example: example.folder,
+            chip: example.chip.name,
+            core: "Cortex-M0+",
+            width: size.0,
+            height: size.1,
+            cycles: run.cycles,
+            flash_bytes: image.flash_bytes,
+            static_ram_bytes: image.static_ram_bytes,
+        });
+    }
+    Ok(runs)
+}
+
+/// [`json`] with the examples' runs after the firmware's, as `"examples"`.
+pub fn json_with_examples(runs: &[ReportRun], examples: &[ExampleRun]) -> String {
+    let firmware = json(runs);
+    let firmware = firmware.trim_end().trim_end_matches('}');
+    let lines: Vec<String> = examples
+        .iter()
+        .map(|run| {
+            format!(
+                "{{\"example\":\"{}\",\"chip\":\"{}\",\"core\":\"{}\",\"scene\":\"snooker\",\"number\":\"f32\",\"width\":{},\"height\":{},\"cycles\":{},\"flash_bytes\":{},\"static_ram_bytes\":{}}}",
+                run.example, run.chip, run.core, run.width, run.height, run.cycles, run.flash_bytes, run.static_ram_bytes
+            )
+        })
+        .collect();
+    format!("{firmware},\n\"examples\":[\n{}\n]}}\n", lines.join(",\n"))
+}
+
+/// The examples' table, after the firmware's.
+fn examples_markdown(examples: &[ExampleRun]) -> String {
+    if examples.is_empty() {
+        return String::new();
+    }
+    let mut text = String::from(
+        "\nThe real-board examples (firmware/examples/), each its UF2 file booted in the rp2040js emulator\n\
+         from the RP2040's boot ROM (`tests/tests/pico_emulated.rs` checks their pictures against the\n\
+         host's): snooker in `f32` at the display's size. **These are cycles**, emulated, from reset\n\
+         (the boot ROM, boot2, parsing and preparing the scene) to the last byte sent to the display;\n\
+         rp2040js models no flash (XIP) or bus wait states.\n\n\
+         | example | chip | core | size | cycles | at 125 MHz | flash bytes | static RAM bytes |\n\
+         |---|---|---|---|---:|---:|---:|---:|\n",
+    );
+    for run in examples {
+        text += &format!(
+            "| {} | {} | {} | {}x{} | {} | {:.2} s | {} | {} |\n",
+            run.example,
+            run.chip,
+            run.core,
+            run.width,
+            run.height,
+            thousands(run.cycles),
+            run.cycles as f64 / 125e6,
+            thousands(run.flash_bytes),
+            thousands(run.static_ram_bytes)
+        );
+    }
+    text
 }
 
 /// A part of the report to run instead of all of it (`cargo xtask firmware-report --scene snooker
@@ -217,12 +309,13 @@ pub fn run(filter: &ReportFilter) -> Result<Vec<ReportRun>, String> {
         }
         return Ok(runs);
     }
+    let examples = example_runs()?;
     let json_path = root.join("docs/firmware-report.json");
-    std::fs::write(&json_path, json(&runs)).map_err(|error| format!("{}: {error}", json_path.display()))?;
+    std::fs::write(&json_path, json_with_examples(&runs, &examples)).map_err(|error| format!("{}: {error}", json_path.display()))?;
     println!("wrote {}", json_path.display());
     let readme_path = root.join("README.md");
     let readme = std::fs::read_to_string(&readme_path).map_err(|error| format!("{}: {error}", readme_path.display()))?;
-    let updated = replace_between_markers(&readme, &markdown(&runs))?;
+    let updated = replace_between_markers(&readme, &(markdown(&runs) + &examples_markdown(&examples)))?;
     std::fs::write(&readme_path, updated).map_err(|error| format!("{}: {error}", readme_path.display()))?;
     println!("wrote the table into {}", readme_path.display());
     Ok(runs)
@@ -466,6 +559,19 @@ mod tests {
         assert_eq!(thousands(1234567), "1,234,567");
         assert_eq!(signed_thousands(-1234), "-1,234");
         assert_eq!(signed_thousands(2156), "+2,156");
+    }
+
+    #[test]
+    fn the_examples_follow_the_runs_in_the_json_and_get_their_own_table() {
+        let example = ExampleRun { example: "pico-ssd1306", chip: "RP2040", core: "Cortex-M0+", width: 128, height: 64, cycles: 69_983_684, flash_bytes: 100_836, static_ram_bytes: 9_000 };
+        let text = json_with_examples(&[], std::slice::from_ref(&example));
+        assert_eq!(
+            text,
+            "{\"runs\":[\n\n],\n\"examples\":[\n{\"example\":\"pico-ssd1306\",\"chip\":\"RP2040\",\"core\":\"Cortex-M0+\",\"scene\":\"snooker\",\"number\":\"f32\",\"width\":128,\"height\":64,\"cycles\":69983684,\"flash_bytes\":100836,\"static_ram_bytes\":9000}\n]}\n"
+        );
+        let table = examples_markdown(&[example]);
+        assert!(table.contains("| pico-ssd1306 | RP2040 | Cortex-M0+ | 128x64 | 69,983,684 | 0.56 s | 100,836 | 9,000 |\n"), "{table}");
+        assert_eq!(examples_markdown(&[]), "");
     }
 
     #[test]
