@@ -8,13 +8,13 @@
 //! Environment (all optional):
 //! - `MICROTRACE_SCENE`: absolute path of a `.mts` file (default: `../scenes/snooker.mts`).
 //! - `MICROTRACE_NUMBER`: `f64`, `f32`, `fixed`, `fixed16`, `f32-micromath` or `soft32` (default `f32`).
-//!   On the mps2-an386 (Cortex-M4F) `f32` is `F32With<VsqrtF32>`: the FPU's square root,
-//!   the same results (src/board/mps2_an386/fpu_sqrt.rs).
+//!   On the boards with an FPU (mps2-an386, Cortex-M4F; mps2-an505, Cortex-M33) `f32` is
+//!   `F32With<VsqrtF32>`: the FPU's square root, the same results (src/fpu_sqrt.rs).
 //! - `MICROTRACE_SIZE`: `WIDTHxHEIGHT` of the render (default `128x64`, the OLED).
 //! - `MICROTRACE_OPT`: `scene` (default: keep the scene's `optimize`), `all`, `none`, or a comma
 //!   list of `pixelbuffer,extents,grid,sortlist`.
-//! - `MICROTRACE_STACK_RESERVE`: the bytes of stack the RAM check keeps free (default 12288, the
-//!   budget's peak stack; src/ram.rs). Smaller lets a larger scene build; its stack may then
+//! - `MICROTRACE_STACK_RESERVE`: the bytes of stack the RAM check keeps free (default: the
+//!   budget's peak stack, 12288, or 6144 on the 16 KB micro:bit; src/ram.rs). Smaller lets a larger scene build; its stack may then
 //!   overflow, which the firmware reports (src/fault.rs).
 //! - `MICROTRACE_FAULT_TEST`: `1` builds the fault test (`cfg(microtrace_fault_test)`, src/fault.rs):
 //!   the firmware then panics, hard-faults, takes an unexpected interrupt or overflows its stack
@@ -134,32 +134,65 @@ fn fail(message: &str) -> ! {
 enum Board {
     Lm3s6965evb,
     Mps2An386,
+    Microbit,
+    Mps2An505,
 }
 
 impl Board {
+    const ALL: [Board; 4] = [Board::Lm3s6965evb, Board::Mps2An386, Board::Microbit, Board::Mps2An505];
+
+    /// The board's cargo feature.
     fn name(self) -> &'static str {
         match self {
             Board::Lm3s6965evb => "lm3s6965evb",
             Board::Mps2An386 => "mps2-an386",
+            Board::Microbit => "microbit",
+            Board::Mps2An505 => "mps2-an505",
         }
+    }
+
+    /// Its folder under src/board/.
+    fn folder(self) -> String {
+        self.name().replace('-', "_")
+    }
+
+    /// The architecture of its core, as the target names it; `cfg(armv6m)`, `cfg(armv7m)` or
+    /// `cfg(armv8m)` for src/fault.rs (each has its own MPU, or none, and fault registers).
+    fn architecture(self) -> &'static str {
+        match self {
+            Board::Lm3s6965evb | Board::Mps2An386 => "armv7m",
+            Board::Microbit => "armv6m",
+            Board::Mps2An505 => "armv8m",
+        }
+    }
+
+    /// Has a single-precision FPU with `vsqrt.f32` (src/fpu_sqrt.rs).
+    fn has_fpu(self) -> bool {
+        matches!(self, Board::Mps2An386 | Board::Mps2An505)
     }
 }
 
 fn select_board() -> Board {
-    let lm3s = env("CARGO_FEATURE_LM3S6965EVB").is_some();
-    let mps2 = env("CARGO_FEATURE_MPS2_AN386").is_some();
-    match (lm3s, mps2) {
-        (true, false) => Board::Lm3s6965evb,
-        (false, true) => Board::Mps2An386,
-        _ => fail("enable exactly one board feature: `lm3s6965evb` or `mps2-an386`"),
+    let enabled: Vec<Board> = Board::ALL
+        .into_iter()
+        .filter(|board| env(&format!("CARGO_FEATURE_{}", board.name().to_uppercase().replace('-', "_"))).is_some())
+        .collect();
+    let [board] = enabled[..] else {
+        let names: Vec<String> = Board::ALL.iter().map(|board| format!("`{}`", board.name())).collect();
+        fail(&format!("enable exactly one board feature: {}", names.join(", ")))
+    };
+    for architecture in ["armv6m", "armv7m", "armv8m"] {
+        println!("cargo:rustc-check-cfg=cfg({architecture})");
     }
+    println!("cargo:rustc-cfg={}", board.architecture());
+    board
 }
 
 fn copy_memory_layout(manifest_dir: &Path, out_dir: &Path, board: Board) -> Memory {
     let source = match board {
         // The repository root's memory.x describes the default board.
         Board::Lm3s6965evb => manifest_dir.join("../memory.x"),
-        Board::Mps2An386 => manifest_dir.join("src/board/mps2_an386/memory.x"),
+        _ => manifest_dir.join("src/board").join(board.folder()).join("memory.x"),
     };
     println!("cargo:rerun-if-changed={}", source.display());
     std::fs::copy(&source, out_dir.join("memory.x"))
@@ -183,9 +216,10 @@ struct Memory {
 impl Memory {
     fn write(&self, out: &mut String) {
         writeln!(out, "/// The board's flash and RAM (its memory.x): the MPU's regions, the RAM check (src/ram.rs).").unwrap();
-        writeln!(out, "pub const FLASH_ORIGIN: u32 = {:#010x};", self.flash.0).unwrap();
-        writeln!(out, "pub const FLASH_BYTES: u32 = {};", self.flash.1).unwrap();
-        writeln!(out, "pub const RAM_ORIGIN: u32 = {:#010x};", self.ram.0).unwrap();
+        // The M0 has no MPU: only the RAM check reads these there.
+        writeln!(out, "#[cfg_attr(armv6m, allow(dead_code))]\npub const FLASH_ORIGIN: u32 = {:#010x};", self.flash.0).unwrap();
+        writeln!(out, "#[cfg_attr(armv6m, allow(dead_code))]\npub const FLASH_BYTES: u32 = {};", self.flash.1).unwrap();
+        writeln!(out, "#[cfg_attr(armv6m, allow(dead_code))]\npub const RAM_ORIGIN: u32 = {:#010x};", self.ram.0).unwrap();
         writeln!(out, "pub const RAM_BYTES: u32 = {};", self.ram.1).unwrap();
     }
 }
@@ -221,9 +255,10 @@ fn memory_region(text: &str, name: &str) -> Option<(u64, u64)> {
 /// The Rust type the tracer computes in (the core's `NumberKind`), checking that the firmware
 /// feature it needs is on.
 fn number_type(name: &str, board: Board) -> &'static str {
-    // The Cortex-M4F's FPU has `vsqrt.f32`, which the core cannot emit (libm's `sqrtf` is
-    // integer code there); it is correctly rounded, so the image is plain f32's. Only with the
-    // hard-float ABI (an FPU); the lm3s6965evb has none. `cfg(vsqrt_f32)` compiles the module.
+    // The Cortex-M4F's and M33's FPU has `vsqrt.f32`, which the core cannot emit (libm's
+    // `sqrtf` is integer code there); it is correctly rounded, so the image is plain f32's. Only
+    // with the hard-float ABI (an FPU); the M3 and M0 have none. `cfg(vsqrt_f32)` compiles the
+    // module.
     println!("cargo:rustc-check-cfg=cfg(vsqrt_f32)");
     let hard_float = env("CARGO_CFG_TARGET_ABI").as_deref() == Some("eabihf");
     let Some(kind) = NumberKind::from_name(name) else {
@@ -231,9 +266,9 @@ fn number_type(name: &str, board: Board) -> &'static str {
         let (last, rest) = names.split_last().unwrap_or((&"", &[]));
         fail(&format!("MICROTRACE_NUMBER={name}: expected {} or {last}", rest.join(", ")))
     };
-    if kind == NumberKind::F32 && matches!(board, Board::Mps2An386) && hard_float {
+    if kind == NumberKind::F32 && board.has_fpu() && hard_float {
         println!("cargo:rustc-cfg=vsqrt_f32");
-        return "microtrace::number::F32With<crate::board::VsqrtF32>";
+        return "microtrace::number::F32With<crate::fpu_sqrt::VsqrtF32>";
     }
     if let Some(feature) = kind.feature() {
         if env(&format!("CARGO_FEATURE_{}", feature.to_uppercase().replace('-', "_"))).is_none() {
@@ -243,7 +278,7 @@ fn number_type(name: &str, board: Board) -> &'static str {
     kind.type_path()
 }
 
-/// The host's stand-in for the M4F's `vsqrt.f32`: std's `f32::sqrt`, correctly rounded as
+/// The host's stand-in for the FPU's `vsqrt.f32`: std's `f32::sqrt`, correctly rounded as
 /// VSQRT is, so the scene prepared here is bit for bit the one the chip would prepare.
 struct HostSqrt;
 

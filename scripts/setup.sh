@@ -8,7 +8,7 @@ set -euo pipefail
 
 need_rustup=()
 installed_targets=$(rustup target list --installed 2>/dev/null || true)
-for target in thumbv7m-none-eabi thumbv7em-none-eabihf thumbv6m-none-eabi; do
+for target in thumbv7m-none-eabi thumbv7em-none-eabihf thumbv6m-none-eabi thumbv8m.main-none-eabihf; do
   grep -qx "$target" <<<"$installed_targets" || need_rustup+=("$target")
 done
 if [ ${#need_rustup[@]} -gt 0 ]; then

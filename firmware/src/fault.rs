@@ -4,7 +4,7 @@
 //! - **The memory layout** (flip-link, the linker of `.cargo/config.toml`): the stack is at the
 //!   bottom of RAM, below `.data` and `.bss`, so a stack that overflows runs off the start of RAM
 //!   instead of through the prepared scene.
-//! - **The MPU** (`protect_memory`, first thing in `main`): only the board's flash (read,
+//! - **The MPU** (src/mpu/, `mpu::protect_memory` first thing in `main`): only the board's flash (read,
 //!   execute), its RAM (read, write) and its peripherals are accessible; everything else faults.
 //!   So the stack running below RAM faults on its first word, and so does any access to an
 //!   unmapped address, which the lm3s6965evb in QEMU otherwise ignores (writes dropped, reads 0:
@@ -17,11 +17,19 @@
 //!
 //! MemManage, BusFault and UsageFault are not enabled, so each escalates to HardFault with its
 //! status bits in CFSR. The MPU is off while HardFault runs (MPU_CTRL.HFNMIENA = 0).
+//!
+//! Per architecture (build.rs sets `cfg(armv6m)`, `cfg(armv7m)` or `cfg(armv8m)` from the
+//! board): the ARMv7-M MPU (the M3 and M4F) takes a base and a power-of-two size per region
+//! (RBAR, RASR); the ARMv8-M MPU (the M33) a base and an inclusive limit (RBAR, RLAR) with the
+//! memory types in MAIR. The micro:bit's Cortex-M0 (ARMv6-M) has no MPU and no fault status
+//! registers, only HardFault, whose handler there is Thumb-1: a stack overflow is still caught
+//! when the access below RAM faults (QEMU's nRF51 faults on unmapped addresses, as the chip
+//! does) and is recognised by the frame's place, but a stray access inside the memory map is
+//! not stopped.
 
 use core::ptr::addr_of;
 
 use crate::decimal::Decimal;
-use crate::scene;
 use crate::semihosting::{self, print};
 
 extern "C" {
@@ -31,60 +39,6 @@ extern "C" {
     static _stack_end: u32;
 }
 
-// MPU_RASR fields (ARMv7-M Architecture Reference Manual, B3.5.9).
-const RASR_ENABLE: u32 = 1;
-const RASR_EXECUTE_NEVER: u32 = 1 << 28;
-const RASR_FULL_ACCESS: u32 = 0b011 << 24;
-const RASR_READ_ONLY: u32 = 0b110 << 24;
-/// Normal memory, write-through (TEX 0, C 1, B 0).
-const RASR_NORMAL: u32 = 1 << 17;
-/// Shareable device memory (TEX 0, C 0, B 1, S 1).
-const RASR_DEVICE: u32 = (1 << 16) | (1 << 18);
-// MPU_CTRL: on, with no background map for privileged code (PRIVDEFENA = 0), off in HardFault.
-const CTRL_ENABLE: u32 = 1;
-
-/// The regions the firmware may touch: (base, bytes, attributes). The PPB (SCB, NVIC, MPU at
-/// 0xE000_0000) is always accessible, whatever the MPU says.
-const REGIONS: [(u32, u32, u32); 3] = [
-    (scene::FLASH_ORIGIN, scene::FLASH_BYTES, RASR_READ_ONLY | RASR_NORMAL),
-    (scene::RAM_ORIGIN, scene::RAM_BYTES, RASR_FULL_ACCESS | RASR_NORMAL | RASR_EXECUTE_NEVER),
-    (crate::board::PERIPHERALS.0, crate::board::PERIPHERALS.1, RASR_FULL_ACCESS | RASR_DEVICE | RASR_EXECUTE_NEVER),
-];
-
-// An MPU region is a power of two of at least 32 bytes, aligned to its size: memory.x must
-// describe its flash and RAM so (both boards' do: 256K at 0, 64K at 0x2000_0000).
-const _: () = {
-    let mut index = 0;
-    while index < REGIONS.len() {
-        let (base, bytes, _) = REGIONS[index];
-        if !bytes.is_power_of_two() || bytes < 32 || base % bytes != 0 {
-            panic!("memory.x: the flash, the RAM and the board's peripherals must each be a power of two of at least 32 bytes, aligned to its size, to be an MPU region (src/fault.rs)");
-        }
-        index += 1;
-    }
-};
-
-/// Turns the MPU on with `REGIONS`: from here on, an access anywhere else faults.
-pub fn protect_memory() {
-    // SAFETY: the MPU's registers, written once before anything depends on the memory map; the
-    // regions cover all the firmware touches (its code and constants, its RAM, the board's
-    // peripherals).
-    unsafe {
-        let mpu = &*cortex_m::peripheral::MPU::PTR;
-        if ((mpu._type.read() >> 8) & 0xff) < REGIONS.len() as u32 {
-            crate::fail("the core has no MPU with 3 regions; the firmware relies on one to catch stack overflows");
-        }
-        for (number, (base, bytes, attributes)) in REGIONS.iter().enumerate() {
-            mpu.rnr.write(number as u32);
-            mpu.rbar.write(*base);
-            mpu.rasr.write(((bytes.trailing_zeros() - 1) << 1) | attributes | RASR_ENABLE);
-        }
-        mpu.ctrl.write(CTRL_ENABLE);
-        cortex_m::asm::dsb();
-        cortex_m::asm::isb();
-    }
-}
-
 /// Room the handler needs below a frame it keeps in place.
 const HANDLER_STACK_BYTES: u32 = 1024;
 
@@ -92,7 +46,8 @@ const HANDLER_STACK_BYTES: u32 = 1024;
 // EXC_RETURN. When the frame lies in the stack with room below it, the handler's stack continues
 // below the frame (which stays readable); otherwise (an overflow: the frame is below the stack's
 // bottom, or too close to it) the handler takes the top of the stack: nothing returns from here,
-// so what was there is no longer needed.
+// so what was there is no longer needed. Thumb-2 (ARMv7-M and ARMv8-M Mainline).
+#[cfg(not(armv6m))]
 core::arch::global_asm!(
     ".section .HardFault.user, \"ax\"",
     ".global HardFault",
@@ -121,17 +76,52 @@ core::arch::global_asm!(
     room = const HANDLER_STACK_BYTES,
 );
 
-// Configurable Fault Status Register bits (B3.2.15): MemManage, BusFault, UsageFault.
-const IACCVIOL: u32 = 1 << 0;
-const DACCVIOL: u32 = 1 << 1;
+// The same in Thumb-1 for ARMv6-M (the M0): no IT blocks or conditional MRS, 8-bit immediates,
+// a branch of ±2 KB (so `bx` through a register to the handler's body).
+#[cfg(armv6m)]
+core::arch::global_asm!(
+    ".section .HardFault.user, \"ax\"",
+    ".global HardFault",
+    ".type HardFault, %function",
+    ".thumb_func",
+    "HardFault:",
+    "  mov r1, lr",
+    "  movs r0, #4",
+    "  tst r0, r1",
+    "  bne 2f",
+    "  mrs r0, msp",
+    "  b 3f",
+    "2:",
+    "  mrs r0, psp",
+    "3:",
+    "  ldr r2, =_stack_end + {room}",
+    "  ldr r3, =_stack_start",
+    "  cmp r0, r2",
+    "  blo 1f",
+    "  cmp r0, r3",
+    "  bhi 1f",
+    "  lsrs r2, r0, #3",
+    "  lsls r2, r2, #3",
+    "  mov sp, r2",
+    "  ldr r2, =microtrace_fault",
+    "  bx r2",
+    "1:",
+    "  mov sp, r3",
+    "  ldr r2, =microtrace_fault",
+    "  bx r2",
+    "  .ltorg",
+    ".size HardFault, . - HardFault",
+    room = const HANDLER_STACK_BYTES,
+);
+
+// Configurable Fault Status Register bits (ARMv7-M B3.2.15; ARMv8-M adds STKOF): MemManage,
+// BusFault, UsageFault.
 const MSTKERR: u32 = 1 << 4;
-const MMARVALID: u32 = 1 << 7;
 const STKERR: u32 = 1 << 12;
-const BFARVALID: u32 = 1 << 15;
 /// Each CFSR bit's meaning, for the message.
-const CFSR_REASONS: [(u32, &str); 16] = [
-    (IACCVIOL, "instruction fetch from an address outside the flash (MemManage)"),
-    (DACCVIOL, "data access outside the flash, RAM and peripherals (MemManage)"),
+const CFSR_REASONS: [(u32, &str); 17] = [
+    (1 << 0, "instruction fetch from an address outside the flash (MemManage)"),
+    (1 << 1, "data access outside the flash, RAM and peripherals (MemManage)"),
     (1 << 3, "MemManage fault while unstacking"),
     (MSTKERR, "MemManage fault while stacking"),
     (1 << 5, "MemManage fault during lazy FPU state preservation"),
@@ -144,29 +134,52 @@ const CFSR_REASONS: [(u32, &str); 16] = [
     (1 << 17, "invalid state: a branch to an address without the Thumb bit (UsageFault)"),
     (1 << 18, "invalid exception return (UsageFault)"),
     (1 << 19, "coprocessor access: the FPU is off or absent (UsageFault)"),
+    (1 << 20, "stack limit (UsageFault)"),
     (1 << 24, "unaligned access (UsageFault)"),
     (1 << 25, "division by zero (UsageFault)"),
 ];
 const HFSR_VECTTBL: u32 = 1 << 1;
 
-/// The HardFault handler's body, on a stack of its own (see `HardFault`).
-#[no_mangle]
-extern "C" fn microtrace_fault(frame: u32, _exc_return: u32) -> ! {
+/// What the fault status registers say.
+struct FaultStatus {
+    cfsr: u32,
+    hfsr: u32,
+    /// The address that faulted, when MMFAR or BFAR holds it.
+    address: Option<u32>,
+}
+
+/// The fault status registers (ARMv7-M and ARMv8-M Mainline).
+#[cfg(not(armv6m))]
+fn fault_status() -> Option<FaultStatus> {
+    const MMARVALID: u32 = 1 << 7;
+    const BFARVALID: u32 = 1 << 15;
     // SAFETY: the SCB's fault registers, read only.
     let scb = unsafe { &*cortex_m::peripheral::SCB::PTR };
     let cfsr = scb.cfsr.read();
-    let hfsr = scb.hfsr.read();
-    let mmfar = scb.mmfar.read();
-    let bfar = scb.bfar.read();
-    let bottom = addr_of!(_stack_end) as u32;
-    let top = addr_of!(_stack_start) as u32;
-    let fault_address = if cfsr & MMARVALID != 0 {
-        Some(mmfar)
+    let address = if cfsr & MMARVALID != 0 {
+        Some(scb.mmfar.read())
     } else if cfsr & BFARVALID != 0 {
-        Some(bfar)
+        Some(scb.bfar.read())
     } else {
         None
     };
+    Some(FaultStatus { cfsr, hfsr: scb.hfsr.read(), address })
+}
+
+/// ARMv6-M (the M0) has none: every fault is a HardFault that says no more.
+#[cfg(armv6m)]
+fn fault_status() -> Option<FaultStatus> {
+    None
+}
+
+/// The HardFault handler's body, on a stack of its own (see `HardFault`).
+#[no_mangle]
+extern "C" fn microtrace_fault(frame: u32, _exc_return: u32) -> ! {
+    let status = fault_status();
+    let cfsr = status.as_ref().map_or(0, |status| status.cfsr);
+    let fault_address = status.as_ref().and_then(|status| status.address);
+    let bottom = addr_of!(_stack_end) as u32;
+    let top = addr_of!(_stack_start) as u32;
 
     // Below the stack there is no RAM (flip-link), and the MPU faults on it: the stack ran off
     // its bottom when the fault was stacking, when the frame is below the bottom, or when the
@@ -197,9 +210,13 @@ extern "C" fn microtrace_fault(frame: u32, _exc_return: u32) -> ! {
         print_hex(pc);
     }
     print(": ");
+    let Some(status) = status else {
+        print("no fault status registers on ARMv6-M: a bus error (an access outside the memory map), an undefined instruction or an unaligned access\n");
+        semihosting::exit(false)
+    };
     let mut first = true;
     for (bit, reason) in CFSR_REASONS {
-        if cfsr & bit != 0 {
+        if status.cfsr & bit != 0 {
             if !first {
                 print(", ");
             }
@@ -207,7 +224,7 @@ extern "C" fn microtrace_fault(frame: u32, _exc_return: u32) -> ! {
             first = false;
         }
     }
-    if hfsr & HFSR_VECTTBL != 0 {
+    if status.hfsr & HFSR_VECTTBL != 0 {
         print(if first { "" } else { ", " });
         print("bus fault reading the vector table");
         first = false;
@@ -220,9 +237,9 @@ extern "C" fn microtrace_fault(frame: u32, _exc_return: u32) -> ! {
         print_hex(address);
     }
     print(" (CFSR ");
-    print_hex(cfsr);
+    print_hex(status.cfsr);
     print(", HFSR ");
-    print_hex(hfsr);
+    print_hex(status.hfsr);
     print(")\n");
     semihosting::exit(false)
 }
@@ -260,9 +277,15 @@ pub fn provoke_if_asked() {
         panic!("provoked by the fault test (provoke-panic)");
     }
     if host_file_exists(b"provoke-hard-fault\0") {
-        // The address the lm3s6965evb's silent hang wrote to: a pointer overwritten by pixels.
-        // SAFETY: none; this is the fault the test wants. The MPU stops the write.
-        unsafe { core::ptr::write_volatile(0x4444_4444 as *mut u32, 0) };
+        // The address the lm3s6965evb's silent hang wrote to: a pointer overwritten by pixels,
+        // which the MPU stops. Without an MPU (the M0), that is the nRF51's peripheral space,
+        // which takes the write; 0x6000_0000 is outside its memory map, a bus error.
+        #[cfg(not(armv6m))]
+        const ADDRESS: usize = 0x4444_4444;
+        #[cfg(armv6m)]
+        const ADDRESS: usize = 0x6000_0000;
+        // SAFETY: none; this is the fault the test wants.
+        unsafe { core::ptr::write_volatile(ADDRESS as *mut u32, 0) };
     }
     if host_file_exists(b"provoke-unexpected-interrupt\0") {
         // PendSV, which no handler of ours expects: main.rs's DefaultHandler.

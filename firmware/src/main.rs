@@ -12,7 +12,12 @@ mod board;
 mod decimal;
 mod display;
 mod fault;
+// The FPU's `vsqrt.f32` for the tracer's `f32`: build.rs sets `vsqrt_f32` when the number
+// type uses it (MICROTRACE_NUMBER=f32 on a board with an FPU and the hard-float ABI).
+#[cfg(vsqrt_f32)]
+mod fpu_sqrt;
 mod measurement;
+mod mpu;
 mod ram;
 mod report;
 mod semihosting;
@@ -71,7 +76,7 @@ fn main() -> ! {
     static mut SCENE: PreparedScene = PreparedScene::unprepared(FlashObjects);
     // From here on an access outside the flash, the RAM and the peripherals faults, and so does
     // the stack running off the bottom of RAM (src/fault.rs).
-    fault::protect_memory();
+    mpu::protect_memory();
     #[cfg(microtrace_fault_test)]
     fault::provoke_if_asked();
     let display = board::init();

@@ -45,8 +45,8 @@ const TABLES_PER_OBJECT: usize = size_of::<DirectionChord<scene::Number>>()
 /// stack beyond the tables is about 3 KB).
 const STACK_BASE_BYTES: usize = 4 * 1024;
 
-/// The budget's peak stack: the least the check keeps.
-const STACK_BUDGET_BYTES: usize = 12 * 1024;
+/// The budget's peak stack: the least the check keeps (12 KB; 6 KB on the 16 KB micro:bit).
+const STACK_BUDGET_BYTES: usize = crate::board::STACK_BUDGET_BYTES;
 
 /// The stack this build keeps free for preparing and rendering (see the module's comment).
 pub const STACK_RESERVE_BYTES: usize = match scene::STACK_RESERVE_BYTES {

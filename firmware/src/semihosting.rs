@@ -5,7 +5,7 @@
 use cortex_m_semihosting::{debug, syscall};
 
 /// SYS_OPEN modes (ISO C `fopen` modes by number): 1 = "rb", 5 = "wb".
-#[cfg_attr(all(feature = "mps2-an386", not(microtrace_fault_test)), allow(dead_code))]
+#[cfg_attr(all(not(feature = "lm3s6965evb"), not(microtrace_fault_test)), allow(dead_code))]
 const MODE_READ_BINARY: usize = 1;
 const MODE_WRITE_BINARY: usize = 5;
 
@@ -41,7 +41,7 @@ impl Drop for HostFile {
 
 /// Whether the host has a readable file at `path` (NUL-terminated). Used by the screen capture
 /// (lm3s6965evb) and the fault test.
-#[cfg_attr(all(feature = "mps2-an386", not(microtrace_fault_test)), allow(dead_code))]
+#[cfg_attr(all(not(feature = "lm3s6965evb"), not(microtrace_fault_test)), allow(dead_code))]
 pub fn host_file_exists(path: &[u8]) -> bool {
     debug_assert_eq!(path.last(), Some(&0));
     // SAFETY: as in `HostFile::create`.

@@ -1,9 +1,10 @@
-//! The firmware fails loudly (firmware/README.md, "When it fails"), on both boards:
+//! The firmware fails loudly (firmware/README.md, "When it fails"), on every board:
 //! - a panic, a hard fault, an unexpected interrupt and a stack overflow, each provoked by the fault test
 //!   (`MICROTRACE_FAULT_TEST=1`, `cargo xtask firmware --provoke`), end the QEMU run with exit
 //!   status 1 and the firmware's message naming what happened, well before the timeout;
 //! - the stack lies below the statics (flip-link), from the start of RAM, so an overflow runs
-//!   off RAM (where the MPU faults) and never through the prepared scene; a real scene that
+//!   off RAM (where the MPU faults, or on the micro:bit's M0, which has none, the bus) and never
+//!   through the prepared scene; a real scene that
 //!   leaves too little stack (the build's stack reserve set to 0) stops with "stack overflow";
 //! - a scene too large for the chip's RAM fails at build time with the RAM it needs, part by
 //!   part, and the board's RAM, not with rust-lld's `will not fit in region 'RAM'`;
@@ -26,21 +27,41 @@ fn work_dir(name: &str) -> PathBuf {
     PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("firmware-faults").join(name)
 }
 
-/// The RAM both boards' memory.x give the firmware.
-const RAM_BYTES: u64 = 64 * 1024;
-const RAM_ORIGIN: u64 = 0x2000_0000;
+/// The RAM each board's memory.x gives the firmware: (origin, bytes).
+fn ram(board: Board) -> (u64, u64) {
+    match board {
+        Board::Lm3s6965evb | Board::Mps2An386 => (0x2000_0000, 64 * 1024),
+        Board::Microbit => (0x2000_0000, 16 * 1024),
+        // The Secure alias of SSRAM2 (firmware/src/board/mps2_an505/memory.x).
+        Board::Mps2An505 => (0x3800_0000, 64 * 1024),
+    }
+}
 
 /// What each provoked fault must print (the start of the firmware's line).
-fn expected_message(fault: Fault) -> &'static [&'static str] {
-    match fault {
-        Fault::Panic => &["microtrace: panic: provoked by the fault test (provoke-panic) at src/fault.rs:"],
-        Fault::HardFault => &[
+fn expected_message(fault: Fault, board: Board) -> Vec<&'static str> {
+    match (fault, board) {
+        (Fault::Panic, _) => vec!["microtrace: panic: provoked by the fault test (provoke-panic) at src/fault.rs:"],
+        // The M0 has no MPU and no fault status registers: a bus error, said as much.
+        (Fault::HardFault, Board::Microbit) => vec![
+            "microtrace: hard fault at PC 0x",
+            ": no fault status registers on ARMv6-M: a bus error (an access outside the memory map)",
+        ],
+        (Fault::HardFault, _) => vec![
             "microtrace: hard fault at PC 0x",
             ": data access outside the flash, RAM and peripherals (MemManage), at address 0x44444444 (CFSR 0x00000082, HFSR 0x40000000)",
         ],
         // PendSV is exception 14, IRQ number 14 - 16.
-        Fault::UnexpectedInterrupt => &["microtrace: unexpected exception or interrupt, IRQ number -2\n"],
-        Fault::StackOverflow => &[
+        (Fault::UnexpectedInterrupt, _) => vec!["microtrace: unexpected exception or interrupt, IRQ number -2\n"],
+        // Without fault status registers, the M0's handler knows the overflow by the frame's place.
+        (Fault::StackOverflow, Board::Microbit) => vec![
+            "microtrace: stack overflow: the stack grew below its bottom, the start of RAM at 0x20000000; it has ",
+            " bytes, what the RAM leaves below the statics, which it cannot reach (flip-link)",
+        ],
+        (Fault::StackOverflow, Board::Mps2An505) => vec![
+            "microtrace: stack overflow: the stack grew below its bottom, the start of RAM at 0x38000000 (an access at 0x37ff",
+            " bytes, what the RAM leaves below the statics, which it cannot reach (flip-link)",
+        ],
+        (Fault::StackOverflow, _) => vec![
             "microtrace: stack overflow: the stack grew below its bottom, the start of RAM at 0x20000000 (an access at 0x1fff",
             " bytes, what the RAM leaves below the statics, which it cannot reach (flip-link)",
         ],
@@ -62,7 +83,7 @@ fn faults_fail_loudly(board: Board) {
         println!("{context}");
         // QEMU's exit status is the firmware's semihosting exit: failure, 1.
         assert!(error.contains("the firmware failed (exit status: 1); QEMU's output:"), "{context}");
-        for text in expected_message(fault) {
+        for text in expected_message(fault, board) {
             assert!(error.contains(text), "{context}\n(expected {text:?})");
         }
         assert!(!error.contains("timed out"), "{context}");
@@ -73,8 +94,9 @@ fn faults_fail_loudly(board: Board) {
         if fault == Fault::HardFault {
             // The PC named is the faulting store's: within the firmware's code.
             let pc = error.split("hard fault at PC 0x").nth(1).and_then(|rest| u64::from_str_radix(rest.get(..8)?, 16).ok());
-            let code_end = xtask::elf::function_address(&elf, "__etext").unwrap_or(256 * 1024);
-            assert!(pc.is_some_and(|pc| pc > 0x400 && pc < code_end), "{context}: PC {pc:?} outside the code (ends {code_end:#x})");
+            let code_start = symbol(&elf, "__stext");
+            let code_end = symbol(&elf, "__etext");
+            assert!(pc.is_some_and(|pc| pc >= code_start && pc < code_end), "{context}: PC {pc:?} outside the code ({code_start:#x} to {code_end:#x})");
         }
         if fault == Fault::StackOverflow {
             // The size it names is the ELF's stack: from the start of RAM to the lowest static.
@@ -106,12 +128,13 @@ fn grouped(value: u64) -> String {
 /// (.data, .bss) lies above its top.
 fn stack_is_below_the_statics(elf: &[u8], board: Board) {
     let symbol = |name: &str| symbol(elf, name);
+    let (ram_origin, ram_bytes) = ram(board);
     let (top, bottom) = (symbol("_stack_start"), symbol("_stack_end"));
-    assert_eq!(bottom, RAM_ORIGIN, "{}: the stack's bottom is the start of RAM", board.name());
+    assert_eq!(bottom, ram_origin, "{}: the stack's bottom is the start of RAM", board.name());
     for statics in ["__sdata", "__sbss"] {
         assert!(symbol(statics) >= top, "{}: {statics} at {:#x} is below the stack's top {top:#x}", board.name(), symbol(statics));
     }
-    assert!(symbol("__ebss") <= RAM_ORIGIN + RAM_BYTES, "{}: .bss ends beyond the RAM", board.name());
+    assert!(symbol("__ebss") <= ram_origin + ram_bytes, "{}: .bss ends beyond the RAM", board.name());
 }
 
 #[test]
@@ -122,6 +145,16 @@ fn faults_on_lm3s6965evb_fail_loudly() {
 #[test]
 fn faults_on_mps2_an386_fail_loudly() {
     faults_fail_loudly(Board::Mps2An386);
+}
+
+#[test]
+fn faults_on_microbit_fail_loudly() {
+    faults_fail_loudly(Board::Microbit);
+}
+
+#[test]
+fn faults_on_mps2_an505_fail_loudly() {
+    faults_fail_loudly(Board::Mps2An505);
 }
 
 /// A scene of `count` spheres on a table, `LINES_PER_SPHERE` lines each after the header.
@@ -175,7 +208,7 @@ fn a_scene_too_large_fails_at_build_time(board: Board) {
     let needed = number_after(line, ": needs ");
     let parts = ["the prepared scene ", "framebuffer ", "stack reserve "].map(|label| number_after(line, label));
     assert_eq!(parts.iter().sum::<u64>(), needed, "{context}: the parts do not add up");
-    assert!(needed > RAM_BYTES, "{context}");
+    assert!(needed > 64 * 1024, "{context}");
     // No framebuffer; the stack reserve grows with the objects beyond the budget's 12 KB.
     assert_eq!(parts[1], 0, "{context}");
     assert!(parts[2] > 12 * 1024 + 340 * 64, "{context}");

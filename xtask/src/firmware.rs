@@ -20,16 +20,22 @@ use crate::setup;
 pub enum Board {
     Lm3s6965evb,
     Mps2An386,
+    /// The BBC micro:bit: a Cortex-M0 (ARMv6-M, the RP2040's instruction set), 16 KB of RAM.
+    Microbit,
+    /// A Cortex-M33 with an FPU (ARMv8-M Mainline, the RP2350's core).
+    Mps2An505,
 }
 
 impl Board {
-    pub const ALL: [Board; 2] = [Board::Lm3s6965evb, Board::Mps2An386];
+    pub const ALL: [Board; 4] = [Board::Lm3s6965evb, Board::Mps2An386, Board::Microbit, Board::Mps2An505];
 
     /// The name on the command line, and the firmware's cargo feature.
     pub fn name(self) -> &'static str {
         match self {
             Board::Lm3s6965evb => "lm3s6965evb",
             Board::Mps2An386 => "mps2-an386",
+            Board::Microbit => "microbit",
+            Board::Mps2An505 => "mps2-an505",
         }
     }
 
@@ -41,6 +47,8 @@ impl Board {
         match self {
             Board::Lm3s6965evb => "thumbv7m-none-eabi",
             Board::Mps2An386 => "thumbv7em-none-eabihf",
+            Board::Microbit => "thumbv6m-none-eabi",
+            Board::Mps2An505 => "thumbv8m.main-none-eabihf",
         }
     }
 
@@ -48,6 +56,8 @@ impl Board {
         match self {
             Board::Lm3s6965evb => Machine { name: "lm3s6965evb", cpu: "cortex-m3" },
             Board::Mps2An386 => Machine { name: "mps2-an386", cpu: "cortex-m4" },
+            Board::Microbit => Machine { name: "microbit", cpu: "cortex-m0" },
+            Board::Mps2An505 => Machine { name: "mps2-an505", cpu: "cortex-m33" },
         }
     }
 

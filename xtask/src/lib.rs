@@ -11,6 +11,7 @@ pub mod elf;
 pub mod example;
 pub mod firmware;
 pub mod grid_pool;
+pub mod host_render;
 pub mod oled;
 pub mod pico;
 pub mod qemu;

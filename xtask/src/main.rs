@@ -8,7 +8,7 @@ use xtask::report::ReportFilter;
 
 fn usage() -> &'static str {
     "usage:
-  cargo xtask firmware [--scene FILE] [--board lm3s6965evb|mps2-an386] [--number f64|f32|fixed|fixed16|f32-micromath|soft32]
+  cargo xtask firmware [--scene FILE] [--board lm3s6965evb|mps2-an386|microbit|mps2-an505] [--number f64|f32|fixed|fixed16|f32-micromath|soft32]
                        [--opt scene|all|none|pixelbuffer,extents,grid,sortlist] [--out DIR]
                        [--timeout SECONDS] [--stack-reserve BYTES] [--progressive] [--framebuffer]
                        [--provoke panic|hard-fault|unexpected-interrupt|stack-overflow]
@@ -61,7 +61,7 @@ fn report_filter(arguments: &[String]) -> Result<ReportFilter, String> {
             "--scene" => filter.scene = Some(value()?),
             "--board" => {
                 let name = value()?;
-                filter.board = Some(Board::from_name(&name).ok_or_else(|| format!("unknown board `{name}` (lm3s6965evb or mps2-an386)"))?);
+                filter.board = Some(Board::from_name(&name).ok_or_else(|| format!("unknown board `{name}` (lm3s6965evb, mps2-an386, microbit or mps2-an505)"))?);
             }
             "--number" => filter.number = Some(value()?),
             "--opt" => filter.optimizations = Some(value()?),
@@ -97,7 +97,7 @@ fn firmware_task(arguments: &[String]) -> Result<(), String> {
             "--scene" => scene = PathBuf::from(value()?),
             "--board" => {
                 let name = value()?;
-                board = Board::from_name(&name).ok_or_else(|| format!("unknown board `{name}` (lm3s6965evb or mps2-an386)"))?;
+                board = Board::from_name(&name).ok_or_else(|| format!("unknown board `{name}` (lm3s6965evb, mps2-an386, microbit or mps2-an505)"))?;
             }
             "--number" => number = value()?,
             "--opt" => optimizations = value()?,

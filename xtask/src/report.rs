@@ -1,6 +1,8 @@
 //! `cargo xtask firmware-report`: the firmware's cost and footprint for both thesis scenes at
-//! 128x64, every number type and both boards, plus all-primitives builds to set against the
-//! scene-only ones. Writes the Markdown table into the root README.md (between
+//! 128x64, every number type and every board (a Cortex-M0, M3, M4F and M33), plus all-primitives
+//! builds to set against the scene-only ones. Every run's picture is set against the host's
+//! render in the same number type (`host_render`); a build the board's RAM cannot hold is listed
+//! with what it needs. Writes the Markdown table into the root README.md (between
 //! [`START_MARKER`] and [`END_MARKER`]) and `docs/firmware-report.json`, which
 //! `microtrace bench --numbers` reads.
 
@@ -58,6 +60,28 @@ pub struct ReportRun {
     /// Primary rays (with antialiasing, every corner and sub-corner ray) and the ray tree's.
     pub rays_traced: u64,
     pub secondary_rays: u64,
+    /// Pixels of `framebuffer.bin` that differ from the host's render in the same number type
+    /// (`host_render`): 0 when the chip and the host agree byte for byte.
+    pub differing_pixels: u64,
+}
+
+/// A build that the board's RAM cannot hold: the RAM check's message (firmware/src/ram.rs).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ReportMiss {
+    pub scene: String,
+    pub board: Board,
+    pub number: String,
+    pub optimizations: &'static str,
+    /// `needs 19,548 bytes of RAM (...), the microbit has 16,384`.
+    pub reason: String,
+}
+
+/// The RAM check's reason when `error` is a build that failed it.
+fn does_not_fit(error: &str) -> Option<String> {
+    let line = error.lines().find(|line| line.contains(" bytes of RAM (") && line.contains("needs "))?;
+    let from = line.find("needs ")?;
+    let reason = &line[from..];
+    Some(reason.split(" (firmware/README.md").next().unwrap_or(reason).to_owned())
 }
 
 /// A real-board example's image (the UF2 file a user flashes) run in the rp2040js emulator
@@ -103,10 +127,24 @@ fn example_runs() -> Result<Vec<ExampleRun>, String> {
     Ok(runs)
 }
 
-/// [`json`] with the examples' runs after the firmware's, as `"examples"`.
-pub fn json_with_examples(runs: &[ReportRun], examples: &[ExampleRun]) -> String {
+/// [`json`] with the builds that did not fit (`"did_not_fit"`) and the examples' runs
+/// (`"examples"`) after the firmware's.
+pub fn json_with_examples(runs: &[ReportRun], misses: &[ReportMiss], examples: &[ExampleRun]) -> String {
     let firmware = json(runs);
     let firmware = firmware.trim_end().trim_end_matches('}');
+    let missed: Vec<String> = misses
+        .iter()
+        .map(|miss| {
+            format!(
+                "{{\"scene\":\"{}\",\"board\":\"{}\",\"number\":\"{}\",\"optimizations\":\"{}\",\"reason\":\"{}\"}}",
+                miss.scene,
+                miss.board.name(),
+                miss.number,
+                miss.optimizations,
+                miss.reason.replace('\\', "\\\\").replace('"', "\\\"")
+            )
+        })
+        .collect();
     let lines: Vec<String> = examples
         .iter()
         .map(|run| {
@@ -116,7 +154,7 @@ pub fn json_with_examples(runs: &[ReportRun], examples: &[ExampleRun]) -> String
             )
         })
         .collect();
-    format!("{firmware},\n\"examples\":[\n{}\n]}}\n", lines.join(",\n"))
+    format!("{firmware},\n\"did_not_fit\":[\n{}\n],\n\"examples\":[\n{}\n]}}\n", missed.join(",\n"), lines.join(",\n"))
 }
 
 /// The examples' table, after the firmware's.
@@ -246,6 +284,7 @@ pub fn run(filter: &ReportFilter) -> Result<Vec<ReportRun>, String> {
     filter.check()?;
     let plan = plan(filter);
     let mut runs = Vec::with_capacity(plan.len());
+    let mut misses = Vec::new();
     let started = std::time::Instant::now();
     for (index, (scene, board, number, primitives, optimizations)) in plan.iter().enumerate() {
         let stem = scene.file_stem().map(|stem| stem.to_string_lossy().into_owned()).unwrap_or_default();
@@ -259,7 +298,24 @@ pub fn run(filter: &ReportFilter) -> Result<Vec<ReportRun>, String> {
         options.optimizations = (*optimizations).to_owned();
         // Every optimization off runs for minutes under QEMU on the lattice in f64.
         options.timeout = std::time::Duration::from_secs(1200);
-        let result = firmware::run(&options).map_err(|error| format!("{label}: {error}"))?;
+        let result = match firmware::run(&options) {
+            Ok(result) => result,
+            Err(error) => match does_not_fit(&error) {
+                Some(reason) => {
+                    println!("    does not fit: {reason}");
+                    misses.push(ReportMiss { scene: stem, board: *board, number: (*number).to_owned(), optimizations, reason });
+                    continue;
+                }
+                None => return Err(format!("{label}: {error}")),
+            },
+        };
+        let framebuffer = std::fs::read(&result.framebuffer).map_err(|error| format!("{label}: {}: {error}", result.framebuffer.display()))?;
+        let host = crate::host_render::render(scene, number, optimizations).map_err(|error| format!("{label}: the host render: {error}"))?;
+        let differing_pixels = if framebuffer.len() == host.len() {
+            framebuffer.iter().zip(&host).filter(|(chip, host)| chip != host).count() as u64
+        } else {
+            host.len() as u64
+        };
         let get = |key: &str| result.numbers.get(key).copied().ok_or_else(|| format!("{label}: the report lacks `{key}`"));
         let run = ReportRun {
             scene: stem,
@@ -283,7 +339,11 @@ pub fn run(filter: &ReportFilter) -> Result<Vec<ReportRun>, String> {
             fmt_symbols: get("fmt_symbols")?,
             rays_traced: get("rays_traced")?,
             secondary_rays: get("secondary_rays")?,
+            differing_pixels,
         };
+        if differing_pixels != 0 {
+            println!("    {differing_pixels} pixels differ from the host's render in {number}");
+        }
         println!(
             "    {} instructions per pixel (frame {}: prepare {}, render {}), flash {} B, static RAM {} B, peak stack {} B ({:.0} s so far)",
             run.instructions_per_pixel,
@@ -302,7 +362,7 @@ pub fn run(filter: &ReportFilter) -> Result<Vec<ReportRun>, String> {
     if !filter.is_everything() {
         let directory = crate::firmware_dir().join("target/report/partial");
         std::fs::create_dir_all(&directory).map_err(|error| format!("{}: {error}", directory.display()))?;
-        for (name, text) in [("firmware-report.json", json(&runs)), ("table.md", markdown(&runs))] {
+        for (name, text) in [("firmware-report.json", json_with_examples(&runs, &misses, &[])), ("table.md", markdown(&runs, &misses))] {
             let path = directory.join(name);
             std::fs::write(&path, text).map_err(|error| format!("{}: {error}", path.display()))?;
             println!("wrote {} (a partial report: README.md and docs/ are left as they are)", path.display());
@@ -311,11 +371,11 @@ pub fn run(filter: &ReportFilter) -> Result<Vec<ReportRun>, String> {
     }
     let examples = example_runs()?;
     let json_path = root.join("docs/firmware-report.json");
-    std::fs::write(&json_path, json_with_examples(&runs, &examples)).map_err(|error| format!("{}: {error}", json_path.display()))?;
+    std::fs::write(&json_path, json_with_examples(&runs, &misses, &examples)).map_err(|error| format!("{}: {error}", json_path.display()))?;
     println!("wrote {}", json_path.display());
     let readme_path = root.join("README.md");
     let readme = std::fs::read_to_string(&readme_path).map_err(|error| format!("{}: {error}", readme_path.display()))?;
-    let updated = replace_between_markers(&readme, &(markdown(&runs) + &examples_markdown(&examples)))?;
+    let updated = replace_between_markers(&readme, &(markdown(&runs, &misses) + &examples_markdown(&examples)))?;
     std::fs::write(&readme_path, updated).map_err(|error| format!("{}: {error}", readme_path.display()))?;
     println!("wrote the table into {}", readme_path.display());
     Ok(runs)
@@ -331,7 +391,7 @@ pub fn json(runs: &[ReportRun]) -> String {
                  \"instructions\":{},\"frame_instructions\":{},\"prepare_instructions\":{},\"render_instructions\":{},\
                  \"pixels\":{},\"instructions_per_pixel\":{},\"flash_bytes\":{},\
                  \"static_ram_bytes\":{},\"stack_peak_bytes\":{},\"f64_symbols\":{},\"panic_symbols\":{},\"fmt_symbols\":{},\
-                 \"rays_traced\":{},\"secondary_rays\":{}}}",
+                 \"rays_traced\":{},\"secondary_rays\":{},\"differing_pixels\":{}}}",
                 run.scene,
                 run.board.name(),
                 run.number,
@@ -352,30 +412,36 @@ pub fn json(runs: &[ReportRun]) -> String {
                 run.panic_symbols,
                 run.fmt_symbols,
                 run.rays_traced,
-                run.secondary_rays
+                run.secondary_rays,
+                run.differing_pixels
             )
         })
         .collect();
     format!("{{\"runs\":[\n{}\n]}}\n", lines.join(",\n"))
 }
 
-/// The text between the markers: the main table, then scene-only against all primitives.
-pub fn markdown(runs: &[ReportRun]) -> String {
+/// The text between the markers: the main table, the builds that did not fit, then the number
+/// types without optimizations, scene-only against all primitives, and chapter 5.
+pub fn markdown(runs: &[ReportRun], misses: &[ReportMiss]) -> String {
     let mut text = String::new();
     text += "Generated by `cargo xtask firmware-report` (the same figures are in\n\
              `docs/firmware-report.json`): each thesis scene rendered at 128x64 by the firmware under QEMU,\n\
-             with the scene's own `optimize` and only the primitives it uses.\n\
+             with the scene's own `optimize` and only the primitives it uses, on four cores: the\n\
+             microbit's Cortex-M0 (ARMv6-M, the RP2040's instruction set: no FPU, no divide, no 32x32→64\n\
+             multiply; 16 KB of RAM), the lm3s6965evb's Cortex-M3 (no FPU), the mps2-an386's Cortex-M4F\n\
+             and the mps2-an505's Cortex-M33 (the RP2350's core), both with a single-precision FPU, so\n\
+             `f32` runs in hardware there and in software on the M0 and M3; `f64` is software on all four.\n\
              **Instructions are not cycles**: QEMU counts executed instructions (a TCG plugin, between\n\
              markers in the firmware), so a divide, a load or a taken branch each count as one, and flash\n\
              wait states are not modelled. The count is the frame's, from before the scene is prepared to\n\
              the end of the render (`frame`, and per pixel), split at a marker between the two into\n\
-             `prepare` (the scene's preparation in place, the sink's set-up) and `render`. The lm3s6965evb\n\
-             (Cortex-M3) has no FPU: `f32` and `f64` are software floating point there; the mps2-an386\n\
-             (Cortex-M4F) runs `f32` in hardware. Flash is text + data; static RAM is data + bss (the\n\
-             prepared scene with its acceleration structures; no framebuffer and no display copy: each row\n\
-             goes to the host and the OLED as it is done). `f64 routines` and `panic symbols` count the linked functions of each kind\n\
-             (double-precision soft float and libm's `f64` functions; panic paths), from the ELF's\n\
-             symbols; each run's `linked-audit.txt` names them.\n\n";
+             `prepare` (the scene's preparation in place, the sink's set-up) and `render`. Flash is text +\n\
+             data; static RAM is data + bss (the prepared scene with its acceleration structures; no\n\
+             framebuffer and no display copy: each row goes to the host and the OLED as it is done).\n\
+             `f64 routines` and `panic symbols` count the linked functions of each kind (double-precision\n\
+             soft float and libm's `f64` functions; panic paths), from the ELF's symbols; each run's\n\
+             `linked-audit.txt` names them. `host` is the picture against the host's render of the same\n\
+             scene in the same number type: `=` byte for byte, or the pixels that differ.\n\n";
     text += &format!(
         "Budget on the lm3s6965evb (64 KB RAM, 256 KB flash) for both scenes in `f32`, asserted by\n\
          `tests/tests/firmware_qemu.rs`: flash at most {} KB, static RAM at most {} KB, peak stack at most\n\
@@ -386,13 +452,13 @@ pub fn markdown(runs: &[ReportRun]) -> String {
         budget::STACK_BYTES / 1024,
         budget::FREE_RAM_BYTES / 1024
     );
-    text += "| scene | board | number | instructions per pixel | frame instructions | prepare instructions | render instructions | flash bytes | static RAM bytes | peak stack bytes | f64 routines | panic symbols |\n";
-    text += "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    text += "| scene | board | number | instructions per pixel | frame instructions | prepare instructions | render instructions | flash bytes | static RAM bytes | peak stack bytes | f64 routines | panic symbols | host |\n";
+    text += "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n";
     let chapter_five = |run: &ReportRun| CHAPTER_FIVE_SCENES.iter().any(|file| file.trim_start_matches("scenes/").trim_end_matches(".mts") == run.scene);
     let scene_optimizations = |run: &&ReportRun| run.primitives == Primitives::Scene && run.optimizations == "scene" && !chapter_five(run);
     for run in runs.iter().filter(scene_optimizations) {
         text += &format!(
-            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
+            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
             run.scene,
             run.board.name(),
             run.number,
@@ -404,8 +470,18 @@ pub fn markdown(runs: &[ReportRun]) -> String {
             thousands(run.static_ram_bytes),
             thousands(run.stack_peak_bytes),
             run.f64_symbols,
-            run.panic_symbols
+            run.panic_symbols,
+            host_column(run)
         );
+    }
+    if !misses.is_empty() {
+        text += "\nBuilds the board's RAM cannot hold (the build's RAM check, firmware/src/ram.rs: the prepared\n\
+                 scene and the stack it reserves; `--stack-reserve` trades the reserve for the risk of an\n\
+                 overflow, which the firmware then reports):\n\n\
+                 | scene | board | number | optimizations | why |\n|---|---|---|---|---|\n";
+        for miss in misses {
+            text += &format!("| {} | {} | {} | {} | {} |\n", miss.scene, miss.board.name(), miss.number, miss.optimizations, miss.reason);
+        }
     }
     text += &without_optimizations(runs);
     text += &format!(
@@ -435,6 +511,15 @@ pub fn markdown(runs: &[ReportRun]) -> String {
     text
 }
 
+/// `=` when the run's picture is the host's byte for byte, else how many pixels differ.
+fn host_column(run: &ReportRun) -> String {
+    if run.differing_pixels == 0 {
+        "=".to_owned()
+    } else {
+        format!("{} differ", thousands(run.differing_pixels))
+    }
+}
+
 /// The chapter-5 scenes: the ray tree (`snooker-polished`) and antialiasing
 /// (`lattice-antialiased`), with their rays per pixel and the tree's secondary rays.
 fn chapter_five_table(runs: &[ReportRun]) -> String {
@@ -450,12 +535,12 @@ fn chapter_five_table(runs: &[ReportRun]) -> String {
          reflective balls, a glass cue ball, two lights, depth 4) and `lattice-antialiased` (corners\n\
          split twice where they differ by 6 %), with the scene's own `optimize`; rays per pixel counts\n\
          every primary ray (with antialiasing, every corner and sub-corner), secondary rays the tree's:\n\n\
-         | scene | board | number | instructions per pixel | frame instructions | rays per pixel | secondary rays | flash bytes | static RAM bytes | peak stack bytes | f64 routines | panic symbols |\n\
-         |---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
+         | scene | board | number | instructions per pixel | frame instructions | rays per pixel | secondary rays | flash bytes | static RAM bytes | peak stack bytes | f64 routines | panic symbols | host |\n\
+         |---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n",
     );
     for run in chapter_five {
         text += &format!(
-            "| {} | {} | {} | {} | {} | {:.2} | {} | {} | {} | {} | {} | {} |\n",
+            "| {} | {} | {} | {} | {} | {:.2} | {} | {} | {} | {} | {} | {} | {} |\n",
             run.scene,
             run.board.name(),
             run.number,
@@ -467,7 +552,8 @@ fn chapter_five_table(runs: &[ReportRun]) -> String {
             thousands(run.static_ram_bytes),
             thousands(run.stack_peak_bytes),
             run.f64_symbols,
-            run.panic_symbols
+            run.panic_symbols,
+            host_column(run)
         );
     }
     text
@@ -564,14 +650,32 @@ mod tests {
     #[test]
     fn the_examples_follow_the_runs_in_the_json_and_get_their_own_table() {
         let example = ExampleRun { example: "pico-ssd1306", chip: "RP2040", core: "Cortex-M0+", width: 128, height: 64, cycles: 69_983_684, flash_bytes: 100_836, static_ram_bytes: 9_000 };
-        let text = json_with_examples(&[], std::slice::from_ref(&example));
+        let miss = ReportMiss {
+            scene: "lattice".into(),
+            board: Board::Microbit,
+            number: "f64".into(),
+            optimizations: "scene",
+            reason: "needs 24,552 bytes of RAM (the prepared scene 15,280 for 54 objects in f64, \"x\"), the microbit has 16,384".into(),
+        };
+        let text = json_with_examples(&[], std::slice::from_ref(&miss), std::slice::from_ref(&example));
         assert_eq!(
             text,
-            "{\"runs\":[\n\n],\n\"examples\":[\n{\"example\":\"pico-ssd1306\",\"chip\":\"RP2040\",\"core\":\"Cortex-M0+\",\"scene\":\"snooker\",\"number\":\"f32\",\"width\":128,\"height\":64,\"cycles\":69983684,\"flash_bytes\":100836,\"static_ram_bytes\":9000}\n]}\n"
+            "{\"runs\":[\n\n],\n\"did_not_fit\":[\n{\"scene\":\"lattice\",\"board\":\"microbit\",\"number\":\"f64\",\"optimizations\":\"scene\",\
+             \"reason\":\"needs 24,552 bytes of RAM (the prepared scene 15,280 for 54 objects in f64, \\\"x\\\"), the microbit has 16,384\"}\n],\n\"examples\":[\n{\"example\":\"pico-ssd1306\",\"chip\":\"RP2040\",\"core\":\"Cortex-M0+\",\"scene\":\"snooker\",\"number\":\"f32\",\"width\":128,\"height\":64,\"cycles\":69983684,\"flash_bytes\":100836,\"static_ram_bytes\":9000}\n]}\n"
         );
         let table = examples_markdown(&[example]);
         assert!(table.contains("| pico-ssd1306 | RP2040 | Cortex-M0+ | 128x64 | 69,983,684 | 0.56 s | 100,836 | 9,000 |\n"), "{table}");
         assert_eq!(examples_markdown(&[]), "");
+    }
+
+    #[test]
+    fn a_build_that_fails_the_ram_check_does_not_fit() {
+        let error = "building the firmware failed: /r/scenes/lattice.mts: needs 19,548 bytes of RAM (the prepared scene 10,592 for 54 objects in f32, framebuffer 0 for 128x64, stack reserve 8,956), the microbit has 16,384 (firmware/README.md, \"When it fails\")\nerror[E0080]: ...";
+        assert_eq!(
+            does_not_fit(error).as_deref(),
+            Some("needs 19,548 bytes of RAM (the prepared scene 10,592 for 54 objects in f32, framebuffer 0 for 128x64, stack reserve 8,956), the microbit has 16,384")
+        );
+        assert_eq!(does_not_fit("building the firmware failed: error[E0433]: cannot find `x`"), None);
     }
 
     #[test]
@@ -589,7 +693,8 @@ mod tests {
 
     #[test]
     fn a_filter_keeps_only_its_runs() {
-        assert_eq!(plan(&ReportFilter::default()).len(), 2 * 2 * NUMBERS.len() * 2 + 2 * 2 + 2 * 2 * CHAPTER_FIVE_NUMBERS.len());
+        let boards = Board::ALL.len();
+        assert_eq!(plan(&ReportFilter::default()).len(), 2 * 2 * NUMBERS.len() * boards + 2 * boards + 2 * boards * CHAPTER_FIVE_NUMBERS.len());
         let one = ReportFilter { scene: Some("snooker".into()), board: Some(Board::Mps2An386), number: Some("f32".into()), ..Default::default() };
         let kept: Vec<(Primitives, &str)> = plan(&one).into_iter().map(|(_, _, _, primitives, optimizations)| (primitives, optimizations)).collect();
         assert_eq!(kept, [(Primitives::Scene, "scene"), (Primitives::Scene, "none"), (Primitives::All, "scene")]);
@@ -623,12 +728,17 @@ mod tests {
             fmt_symbols: 2,
             rays_traced: 3000,
             secondary_rays: 0,
+            differing_pixels: 0,
         };
-        let table = markdown(&[run]);
+        let mut differing = run.clone();
+        differing.board = Board::Microbit;
+        differing.differing_pixels = 1234;
+        let table = markdown(&[run, differing], &[]);
         assert!(table.contains("| instructions per pixel | frame instructions | prepare instructions | render instructions |"), "{table}");
-        assert!(table.contains("| f64 routines | panic symbols |\n"), "{table}");
+        assert!(table.contains("| f64 routines | panic symbols | host |\n"), "{table}");
+        assert!(table.contains("| snooker | microbit | f32 | 4,380 | 35,882,729 | 22,777,349 | 13,105,380 | 61,956 | 18,080 | 9,360 | 30 | 5 | 1,234 differ |\n"), "{table}");
         assert!(
-            table.contains("| snooker | mps2-an386 | f32 | 4,380 | 35,882,729 | 22,777,349 | 13,105,380 | 61,956 | 18,080 | 9,360 | 30 | 5 |\n"),
+            table.contains("| snooker | mps2-an386 | f32 | 4,380 | 35,882,729 | 22,777,349 | 13,105,380 | 61,956 | 18,080 | 9,360 | 30 | 5 | = |\n"),
             "{table}"
         );
     }
@@ -657,6 +767,7 @@ mod tests {
             fmt_symbols: 7,
             rays_traced: 8,
             secondary_rays: 9,
+            differing_pixels: 0,
         };
         assert_eq!(
             json(&[run]),
@@ -664,7 +775,7 @@ mod tests {
              \"optimizations\":\"scene\",\"width\":128,\"height\":64,\"instructions\":8192,\"frame_instructions\":8192,\
              \"prepare_instructions\":192,\"render_instructions\":8000,\"pixels\":8192,\"instructions_per_pixel\":1,\
              \"flash_bytes\":2,\"static_ram_bytes\":3,\"stack_peak_bytes\":4,\"f64_symbols\":5,\"panic_symbols\":6,\"fmt_symbols\":7,\
-             \"rays_traced\":8,\"secondary_rays\":9}\n]}\n"
+             \"rays_traced\":8,\"secondary_rays\":9,\"differing_pixels\":0}\n]}\n"
         );
     }
 }

@@ -1,9 +1,9 @@
 //! Board support: one folder per board, one board per build (a cargo feature). Each provides
-//! `Display` (a `display::RowDisplay`: whole rows of grey levels), `init()`
-//! and `hold_picture_for_capture()`; the render and the report are shared (main.rs).
+//! `Display` (a `display::RowDisplay`: whole rows of grey levels), `init()`,
+//! `hold_picture_for_capture()` and `STACK_BUDGET_BYTES` (src/ram.rs), and with an MPU
+//! `PERIPHERALS` (src/fault.rs); the render and the report are shared (main.rs).
 
-#[cfg(all(feature = "lm3s6965evb", feature = "mps2-an386"))]
-compile_error!("enable exactly one board feature");
+//! build.rs checks that exactly one is enabled.
 
 #[cfg(feature = "lm3s6965evb")]
 mod lm3s6965evb;
@@ -14,3 +14,13 @@ pub use lm3s6965evb::*;
 mod mps2_an386;
 #[cfg(feature = "mps2-an386")]
 pub use mps2_an386::*;
+
+#[cfg(feature = "microbit")]
+mod microbit;
+#[cfg(feature = "microbit")]
+pub use microbit::*;
+
+#[cfg(feature = "mps2-an505")]
+mod mps2_an505;
+#[cfg(feature = "mps2-an505")]
+pub use mps2_an505::*;

@@ -48,3 +48,7 @@ pub fn hold_picture_for_capture() -> bool {
 /// The peripherals the firmware touches (SSI0, GPIO C and D, system control) lie in the first
 /// megabyte of the peripheral region: the MPU's region for them (src/fault.rs).
 pub const PERIPHERALS: (u32, u32) = (0x4000_0000, 1 << 20);
+
+/// The stack the RAM check keeps at the least (src/ram.rs): the budget's 12 KB
+/// (firmware/README.md, "Memory budget").
+pub const STACK_BUDGET_BYTES: usize = 12 * 1024;

@@ -3,13 +3,6 @@
 //! to the host as `framebuffer.bin` only. The memory layout (memory.x beside this file) uses
 //! 256 KB of code and 64 KB of RAM of QEMU's 4 MB + 4 MB, to stand for a small part.
 
-// The FPU's `vsqrt.f32` for the tracer's `f32`: build.rs sets `vsqrt_f32` when the number
-// type uses it (MICROTRACE_NUMBER=f32 with the hard-float ABI).
-#[cfg(vsqrt_f32)]
-mod fpu_sqrt;
-#[cfg(vsqrt_f32)]
-pub use fpu_sqrt::VsqrtF32;
-
 /// No display on this board; the type is there so the shared code has one to name.
 pub type Display = crate::display::NoDisplay;
 
@@ -25,3 +18,7 @@ pub fn hold_picture_for_capture() -> bool {
 /// The APB peripherals (UARTs, timers, the FPGA's registers), the MPU's region for them
 /// (src/fault.rs); the firmware uses none, semihosting is all it needs.
 pub const PERIPHERALS: (u32, u32) = (0x4000_0000, 1 << 20);
+
+/// The stack the RAM check keeps at the least (src/ram.rs): the budget's 12 KB
+/// (firmware/README.md, "Memory budget").
+pub const STACK_BUDGET_BYTES: usize = 12 * 1024;

@@ -2,14 +2,15 @@
 //!
 //! The core computes `f32` square roots with libm's `sqrtf`, integer code here (libm has no
 //! ARM implementation), and cannot emit the instruction itself: it is `forbid(unsafe_code)`
-//! and stable `core` has no `f32` square root. So on this board build.rs makes the number type
+//! and stable `core` has no `f32` square root. So on the boards with an FPU (the mps2-an386's
+//! Cortex-M4F, the mps2-an505's Cortex-M33) build.rs makes the number type
 //! `microtrace::number::F32With<VsqrtF32>` for `MICROTRACE_NUMBER=f32`: plain `f32` for every
 //! other operation, and this square root.
 //!
 //! The image stays byte-identical to the host's `f32`: VSQRT is IEEE 754's correctly rounded
 //! square root, the same as libm's `sqrtf`. ARMv7-M Architecture Reference Manual (ARM DDI
-//! 0403E), chapter A7, VSQRT: `S[d] = FPSqrt(S[m], TRUE)`; the floating-point pseudocode of
-//! chapter A2 defines `FPSqrt` as the exact square root rounded once by `FPRound` in the
+//! 0403E), chapter A7, VSQRT: `S[d] = FPSqrt(S[m], TRUE)` (the ARMv8-M manual, DDI 0553,
+//! says the same of the M33's); the floating-point pseudocode of chapter A2 defines `FPSqrt` as the exact square root rounded once by `FPRound` in the
 //! FPSCR's rounding mode, and the floating-point extension's arithmetic as IEEE 754's. The
 //! firmware never changes the FPSCR, so the mode is its reset value, round to nearest even,
 //! with flush-to-zero and default NaN off: the mode every other `f32` operation here runs in.
@@ -43,7 +44,7 @@ impl SquareRoot for VsqrtF32 {
         // never changes): `pure, nomem, nostack`. Not `preserves_flags`: VSQRT may set the
         // FPSCR's cumulative exception bits (inexact), which count as flags to `asm!`.
         // cortex-m-rt enables the FPU before `main`, and build.rs compiles this module only
-        // for the hard-float ABI (thumbv7em-none-eabihf).
+        // for the hard-float ABI (thumbv7em-none-eabihf, thumbv8m.main-none-eabihf).
         unsafe {
             core::arch::asm!(
                 "vmov {saved}, s0",

@@ -1,0 +1,22 @@
+//! BBC micro:bit (nRF51822, Cortex-M0: ARMv6-M, the RP2040's instruction set), QEMU machine
+//! `microbit`: 256 KB of flash and 16 KB of RAM (memory.x beside this file), no FPU, no
+//! hardware divide, no 32x32→64 multiply, and no MPU (src/fault.rs says what that changes).
+//! Its 5x5 LED matrix is no display for a picture: the picture goes to the host as
+//! `framebuffer.bin` only.
+
+/// No display on this board; the type is there so the shared code has one to name.
+pub type Display = crate::display::NoDisplay;
+
+pub fn init() -> Option<Display> {
+    None
+}
+
+/// Nothing to capture.
+pub fn hold_picture_for_capture() -> bool {
+    true
+}
+
+/// The stack the RAM check keeps at the least (src/ram.rs): 16 KB of RAM cannot keep the
+/// other boards' 12 KB beside a scene; snooker's deepest stack measured 4.5 KB in every number
+/// type (docs/firmware-report.json), so 6 KB.
+pub const STACK_BUDGET_BYTES: usize = 6 * 1024;

@@ -1,0 +1,24 @@
+//! ARM MPS2 FPGA board with the AN505 image, QEMU machine `mps2-an505`: Cortex-M33 (ARMv8-M
+//! Mainline, the RP2350's core) with a single-precision FPU (cortex-m-rt enables it before
+//! `main`), running Secure, where it starts. No display: the picture goes to the host as
+//! `framebuffer.bin` only. The memory layout (memory.x beside this file) uses 256 KB of code
+//! and 64 KB of RAM, to stand for a small part.
+
+/// No display on this board; the type is there so the shared code has one to name.
+pub type Display = crate::display::NoDisplay;
+
+pub fn init() -> Option<Display> {
+    None
+}
+
+/// Nothing to capture.
+pub fn hold_picture_for_capture() -> bool {
+    true
+}
+
+/// The Secure alias of the APB peripherals, the MPU's region for them (src/fault.rs); the
+/// firmware uses none, semihosting is all it needs.
+pub const PERIPHERALS: (u32, u32) = (0x5000_0000, 1 << 20);
+
+/// The stack the RAM check keeps at the least (src/ram.rs): the budget's 12 KB.
+pub const STACK_BUDGET_BYTES: usize = 12 * 1024;
