@@ -109,7 +109,9 @@ fn bench_numbers_reports_every_type_out_of_range_scenes_and_firmware_figures() {
                     {"scene":"snooker","board":"lm3s6965evb","number":"fixed","instructions_per_pixel":500,"frame_instructions":4096000},
                     {"scene":"lattice","board":"lm3s6965evb","number":"f32","instructions_per_pixel":2000,"instructions":16384000},
                     {"scene":"lattice","board":"lm3s6965evb","number":"fixed","instructions_per_pixel":1000},
-                    {"scene":"lattice","board":"mps2-an386","number":"f32","instructions_per_pixel":333,"frame_instructions":2727936}]}"#,
+                    {"scene":"lattice","board":"mps2-an386","number":"f32","instructions_per_pixel":333,"frame_instructions":2727936},
+                    {"scene":"lattice","board":"microbit","number":"f32","instructions_per_pixel":11246,"frame_instructions":92129190},
+                    {"scene":"snooker","board":"mps2-an505","number":"f32","instructions_per_pixel":277,"frame_instructions":2271093}]}"#,
     )
     .unwrap();
     let report = directory.join("numbers.md");
@@ -149,15 +151,16 @@ fn bench_numbers_reports_every_type_out_of_range_scenes_and_firmware_figures() {
     assert!(markdown.contains("| soft32 (software floating point): f32's target"), "{markdown}");
     assert!(markdown.contains("snooker, optimizations off: no entry in ") && markdown.contains("| not measured |"), "{markdown}");
     let lattice_small_f32 = markdown.lines().find(|line| line.starts_with("| lattice 128x64 | f32 |")).unwrap();
-    assert!(lattice_small_f32.ends_with("| 2000 | 333 |"), "{lattice_small_f32}");
+    // M0, M3, M4F and M33, in that order.
+    assert!(lattice_small_f32.ends_with("| 11246 | 2000 | 333 | — |"), "{lattice_small_f32}");
     // The full-size rows have no firmware figures (those are 128x64 renders).
     let snooker_small_fixed = markdown.lines().find(|line| line.starts_with("| snooker 44x40 | fixed |")).unwrap();
-    assert!(snooker_small_fixed.ends_with("| — | — |"), "{snooker_small_fixed}");
-    // The host panel on top (640 rows), the Cortex-M3 and Cortex-M4F panels side by side below
-    // it, with points where the report has instructions per frame (`frame_instructions`, or
-    // `instructions`).
+    assert!(snooker_small_fixed.ends_with("| — | — | — | — |"), "{snooker_small_fixed}");
+    // The host panel on top (640 rows), below it the Cortex-M0 and Cortex-M3 panels side by
+    // side, then the Cortex-M4F and Cortex-M33, with points where the report has instructions
+    // per frame (`frame_instructions`, or `instructions`).
     let (width, height, pixels) = microtrace_sim::files::read_png_rgb(&plot).unwrap();
-    assert_eq!((width, height), (1000, 1160));
+    assert_eq!((width, height), (1000, 1680));
     let coloured = |rows: std::ops::Range<usize>, columns: std::ops::Range<usize>| {
         rows.flat_map(|row| columns.clone().map(move |column| row * width as usize + column))
             .filter(|&at| {
@@ -168,8 +171,12 @@ fn bench_numbers_reports_every_type_out_of_range_scenes_and_firmware_figures() {
     };
     let host = coloured(0..640, 0..1000);
     assert!(host > 100, "the host panel has only {host} coloured pixels: no points drawn?");
-    let cortex_m3 = coloured(640..1160, 0..500);
-    let cortex_m4f = coloured(640..1160, 500..1000);
+    let cortex_m0 = coloured(640..1160, 0..500);
+    let cortex_m3 = coloured(640..1160, 500..1000);
+    let cortex_m4f = coloured(1160..1680, 0..500);
+    let cortex_m33 = coloured(1160..1680, 500..1000);
+    assert!(cortex_m0 > 20, "the Cortex-M0 panel has only {cortex_m0} coloured pixels: no point drawn?");
     assert!(cortex_m3 > 100, "the Cortex-M3 panel has only {cortex_m3} coloured pixels: no points drawn?");
     assert!(cortex_m4f > 20, "the Cortex-M4F panel has only {cortex_m4f} coloured pixels: no point drawn?");
+    assert!(cortex_m33 > 20, "the Cortex-M33 panel has only {cortex_m33} coloured pixels: no point drawn?");
 }

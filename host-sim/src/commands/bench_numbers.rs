@@ -26,7 +26,7 @@ mod firmware;
 #[path = "bench_numbers_plot.rs"]
 mod plot;
 
-use firmware::{Build, FirmwareFigures, CORTEX_M3_BOARD, CORTEX_M4F_BOARD};
+use firmware::{Build, FirmwareFigures, CORTEX_M0_BOARD, CORTEX_M33_BOARD, CORTEX_M3_BOARD, CORTEX_M4F_BOARD};
 use plot::{BoardPanel, BoardPoint, PlotPoint};
 
 pub const DEFAULT_REPORT: &str = "docs/numbers.md";
@@ -323,10 +323,13 @@ fn plot_points(results: &[CaseResult]) -> Vec<PlotPoint> {
     points
 }
 
-/// The board panels of the plot, Cortex-M3 then Cortex-M4F.
-const BOARD_PANELS: [BoardPanel; 2] = [
+/// The board panels of the plot, two to a row: the cores without an FPU (M0, M3), then those
+/// with one (M4F, M33).
+const BOARD_PANELS: [BoardPanel; 4] = [
+    BoardPanel { title: "Cortex-M0 (microbit, RP2040's ISA): firmware", board: CORTEX_M0_BOARD },
     BoardPanel { title: "Cortex-M3 (lm3s6965evb, no FPU): firmware", board: CORTEX_M3_BOARD },
     BoardPanel { title: "Cortex-M4F (mps2-an386): firmware", board: CORTEX_M4F_BOARD },
+    BoardPanel { title: "Cortex-M33 (mps2-an505, RP2350's core): firmware", board: CORTEX_M33_BOARD },
 ];
 
 /// One point per board, thesis scene and number type: the firmware's instructions per 128x64
@@ -397,7 +400,9 @@ fn write_report(
     )?;
     writeln!(
         report,
-        "Below, one panel per board, {CORTEX_M3_BOARD} (Cortex-M3, no FPU) and {CORTEX_M4F_BOARD} (Cortex-M4F): one point \
+        "Below, one panel per board: {CORTEX_M0_BOARD} (Cortex-M0, the RP2040's instruction set: no FPU, no divide, no \
+         32x32→64 multiply), {CORTEX_M3_BOARD} (Cortex-M3, no FPU), {CORTEX_M4F_BOARD} (Cortex-M4F) and \
+         {CORTEX_M33_BOARD} (Cortex-M33 with an FPU, the RP2350's core): one point \
          per number type per thesis scene: x is the firmware's instructions for one {}x{} frame, preparation plus \
          render (`frame_instructions` of the firmware report, or its `instructions` where it has none; log scale), y \
          the same share of differing pixels as above for that scene at {}x{} (the firmware renders the host's bytes). \
@@ -735,9 +740,9 @@ fn write_group_table(report: &mut String, results: &[CaseResult], group: &str, f
     let small = group != GROUP_FULL;
     writeln!(
         report,
-        "| scene | number | identical | group changes | largest step | speckles | PSNR | time | / f64 | rounds | M3 instr/px | M4F instr/px |"
+        "| scene | number | identical | group changes | largest step | speckles | PSNR | time | / f64 | rounds | M0 instr/px | M3 instr/px | M4F instr/px | M33 instr/px |"
     )?;
-    writeln!(report, "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")?;
+    writeln!(report, "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")?;
     for result in in_group {
         let f64_median = result.f64_median();
         for measured in &result.numbers {
@@ -757,25 +762,27 @@ fn write_group_table(report: &mut String, results: &[CaseResult], group: &str, f
                     let psnr = if d.psnr_db.is_infinite() { "∞".into() } else { format!("{:.1} dB", d.psnr_db) };
                     writeln!(
                         report,
-                        "| {scene} | {name} | {} | {} | {} | {} | {psnr} | {:.2} ms | {relative} | {} | {} | {} |",
+                        "| {scene} | {name} | {} | {} | {} | {} | {psnr} | {:.2} ms | {relative} | {} | {} | {} | {} | {} |",
                         identical_text(d),
                         d.group_changes,
                         d.largest_shade_step,
                         d.speckles,
                         time.as_secs_f64() * 1e3,
                         result.rounds,
+                        instructions(CORTEX_M0_BOARD),
                         instructions(CORTEX_M3_BOARD),
-                        instructions(CORTEX_M4F_BOARD)
+                        instructions(CORTEX_M4F_BOARD),
+                        instructions(CORTEX_M33_BOARD)
                     )?;
                 }
                 (Outcome::Rendered { .. }, None) => {
-                    writeln!(report, "| {scene} | {name} | no f64 image to compare with | | | | | | | | | |")?;
+                    writeln!(report, "| {scene} | {name} | no f64 image to compare with | | | | | | | | | | | |")?;
                 }
                 (Outcome::OutOfRange(message), _) => {
-                    writeln!(report, "| {scene} | {name} | **out of range**: {} | | | | | | | | | |", one_line(message))?;
+                    writeln!(report, "| {scene} | {name} | **out of range**: {} | | | | | | | | | | | |", one_line(message))?;
                 }
                 (Outcome::Failed(message), _) => {
-                    writeln!(report, "| {scene} | {name} | **failed**: {} | | | | | | | | | |", one_line(message))?;
+                    writeln!(report, "| {scene} | {name} | **failed**: {} | | | | | | | | | | | |", one_line(message))?;
                 }
             }
         }
@@ -788,9 +795,9 @@ fn write_firmware_source(report: &mut String, firmware: &FirmwareSource) -> anyh
     writeln!(report, "## Where the Cortex-M figures come from\n")?;
     let source = format!(
         "Instructions per pixel and per frame are read from `{}`, which `cargo xtask firmware-report` writes: each \
-         thesis scene rendered at 128x64 by the firmware under QEMU with an instruction-counting plugin, Cortex-M3 on \
-         the {CORTEX_M3_BOARD} board (no FPU: f32 in software) and Cortex-M4F on {CORTEX_M4F_BOARD} (single-precision \
-         FPU). They count the frame, the scene's preparation plus the render, as the host's times do (a report without \
+         thesis scene rendered at 128x64 by the firmware under QEMU with an instruction-counting plugin, Cortex-M0 on \
+         the {CORTEX_M0_BOARD} board and Cortex-M3 on {CORTEX_M3_BOARD} (no FPU: f32 in software), Cortex-M4F on \
+         {CORTEX_M4F_BOARD} and Cortex-M33 on {CORTEX_M33_BOARD} (single-precision FPU). They count the frame, the scene's preparation plus the render, as the host's times do (a report without \
          `frame_instructions` is from before the frame was measured and counts the render alone). They are \
          instructions, not cycles.",
         firmware.path.display()

@@ -7,8 +7,10 @@ use std::collections::BTreeMap;
 use std::path::Path;
 
 /// The board QEMU emulates for each core.
+pub const CORTEX_M0_BOARD: &str = "microbit";
 pub const CORTEX_M3_BOARD: &str = "lm3s6965evb";
 pub const CORTEX_M4F_BOARD: &str = "mps2-an386";
+pub const CORTEX_M33_BOARD: &str = "mps2-an505";
 
 /// Which firmware builds a figure comes from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]

@@ -1,7 +1,8 @@
-//! The plot of `bench --numbers`, three panels in one PNG:
+//! The plot of `bench --numbers`, five panels in one PNG:
 //! - on top, the host: speed (render time relative to f64) against error (% of pixels whose
 //!   palette index differs from f64's, log scale), one point per number type per scene group;
-//! - below, one panel per Cortex-M board (Cortex-M3 lm3s6965evb, Cortex-M4F mps2-an386):
+//! - below, two by two, one panel per Cortex-M board (Cortex-M0 microbit, Cortex-M3
+//!   lm3s6965evb, Cortex-M4F mps2-an386, Cortex-M33 mps2-an505):
 //!   instructions per 128x64 frame (log scale, from the firmware report) against the same error
 //!   at 128x64, one point per number type per thesis scene, so that a number type for a board
 //!   is picked from one picture.
@@ -54,8 +55,12 @@ pub struct BoardPanel {
 pub const WIDTH: u32 = 1000;
 /// The host panel's height; the board panels, side by side, are below it.
 const HOST_HEIGHT: u32 = 640;
+/// A row of board panels: two side by side.
 const BOARD_HEIGHT: u32 = 520;
-pub const HEIGHT: u32 = HOST_HEIGHT + BOARD_HEIGHT;
+const BOARDS_PER_ROW: usize = 2;
+/// Two rows of board panels: the four cores.
+const BOARD_ROWS: u32 = 2;
+pub const HEIGHT: u32 = HOST_HEIGHT + BOARD_ROWS * BOARD_HEIGHT;
 /// A log axis cannot show 0 %: identical images are drawn on this floor line, one pixel in a
 /// million, below one pixel of any image up to 1000x1000.
 pub const PERCENT_FLOOR: f64 = 0.0001;
@@ -128,7 +133,7 @@ fn draw(
         .map(|p| p.percent_differing)
         .chain(points.iter().map(|p| p.percent_differing))
         .fold(PERCENT_FLOOR * 10.0, f64::max);
-    let columns = boards.split_evenly((1, panels.len().max(1)));
+    let columns = boards.split_evenly((BOARD_ROWS as usize, BOARDS_PER_ROW));
     for (area, panel) in columns.iter().zip(panels) {
         let in_panel: Vec<&BoardPoint> = board_points.iter().filter(|p| p.board == panel.board).collect();
         draw_board(area, panel, &in_panel, largest_percent)?;
