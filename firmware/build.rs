@@ -9,7 +9,7 @@
 //! - `MICROTRACE_SCENE`: absolute path of a `.mts` file (default: `../scenes/snooker.mts`).
 //! - `MICROTRACE_NUMBER`: `f64`, `f32`, `fixed`, `fixed16`, `f32-micromath` or `soft32` (default `f32`).
 //!   On the boards with an FPU (mps2-an386, Cortex-M4F; mps2-an505, Cortex-M33) `f32` is
-//!   `F32With<VsqrtF32>`: the FPU's square root, the same results (src/fpu_sqrt.rs).
+//!   `F32With<VsqrtF32>`: the FPU's square root, the same results (fpu-sqrt/src/lib.rs).
 //! - `MICROTRACE_SIZE`: `WIDTHxHEIGHT` of the render (default `128x64`, the OLED).
 //! - `MICROTRACE_OPT`: `scene` (default: keep the scene's `optimize`), `all`, `none`, or a comma
 //!   list of `pixelbuffer,extents,grid,sortlist`.
@@ -166,7 +166,7 @@ impl Board {
         }
     }
 
-    /// Has a single-precision FPU with `vsqrt.f32` (src/fpu_sqrt.rs).
+    /// Has a single-precision FPU with `vsqrt.f32` (fpu-sqrt/src/lib.rs).
     fn has_fpu(self) -> bool {
         matches!(self, Board::Mps2An386 | Board::Mps2An505)
     }
@@ -198,6 +198,9 @@ fn copy_memory_layout(manifest_dir: &Path, out_dir: &Path, board: Board) -> Memo
     std::fs::copy(&source, out_dir.join("memory.x"))
         .unwrap_or_else(|error| fail(&format!("cannot copy {}: {error}", source.display())));
     println!("cargo:rustc-link-search={}", out_dir.display());
+    // cortex-m-rt's linker script (with memory.x); here rather than in .cargo/config.toml's
+    // rustflags, which the examples below this folder would inherit.
+    println!("cargo:rustc-link-arg-bins=-Tlink.x");
     let text = std::fs::read_to_string(&source)
         .unwrap_or_else(|error| fail(&format!("cannot read {}: {error}", source.display())));
     let region = |name: &str| {
@@ -257,9 +260,7 @@ fn memory_region(text: &str, name: &str) -> Option<(u64, u64)> {
 fn number_type(name: &str, board: Board) -> &'static str {
     // The Cortex-M4F's and M33's FPU has `vsqrt.f32`, which the core cannot emit (libm's
     // `sqrtf` is integer code there); it is correctly rounded, so the image is plain f32's. Only
-    // with the hard-float ABI (an FPU); the M3 and M0 have none. `cfg(vsqrt_f32)` compiles the
-    // module.
-    println!("cargo:rustc-check-cfg=cfg(vsqrt_f32)");
+    // with the hard-float ABI (an FPU); the M3 and M0 have none (and the crate is empty there).
     let hard_float = env("CARGO_CFG_TARGET_ABI").as_deref() == Some("eabihf");
     let Some(kind) = NumberKind::from_name(name) else {
         let names: Vec<&str> = NumberKind::ALL.iter().map(|kind| kind.name()).collect();
@@ -267,8 +268,7 @@ fn number_type(name: &str, board: Board) -> &'static str {
         fail(&format!("MICROTRACE_NUMBER={name}: expected {} or {last}", rest.join(", ")))
     };
     if kind == NumberKind::F32 && board.has_fpu() && hard_float {
-        println!("cargo:rustc-cfg=vsqrt_f32");
-        return "microtrace::number::F32With<crate::fpu_sqrt::VsqrtF32>";
+        return "microtrace::number::F32With<microtrace_fpu_sqrt::VsqrtF32>";
     }
     if let Some(feature) = kind.feature() {
         if env(&format!("CARGO_FEATURE_{}", feature.to_uppercase().replace('-', "_"))).is_none() {

@@ -12,10 +12,6 @@ mod board;
 mod decimal;
 mod display;
 mod fault;
-// The FPU's `vsqrt.f32` for the tracer's `f32`: build.rs sets `vsqrt_f32` when the number
-// type uses it (MICROTRACE_NUMBER=f32 on a board with an FPU and the hard-float ABI).
-#[cfg(vsqrt_f32)]
-mod fpu_sqrt;
 mod measurement;
 mod mpu;
 mod ram;

@@ -316,22 +316,9 @@ fn the_instruction_count_is_deterministic() {
     assert_eq!(counts[0], counts[1]);
 }
 
-/// `llvm-nm`: the toolchain's (the llvm-tools component that scripts/setup.sh adds), else the
-/// one on the PATH.
+/// `llvm-nm`: the toolchain's, else the one on the PATH.
 fn llvm_nm() -> PathBuf {
-    let rustc = std::env::var("RUSTC").unwrap_or_else(|_| "rustc".into());
-    let ask = |arguments: &[&str]| {
-        Command::new(&rustc).args(arguments).output().ok().map(|output| String::from_utf8_lossy(&output.stdout).into_owned())
-    };
-    let sysroot = ask(&["--print", "sysroot"]).map(|text| text.trim().to_owned());
-    let host = ask(&["-vV"]).and_then(|text| text.lines().find_map(|line| line.strip_prefix("host: ").map(str::to_owned)));
-    if let (Some(sysroot), Some(host)) = (sysroot, host) {
-        let tool = PathBuf::from(sysroot).join("lib/rustlib").join(host).join("bin/llvm-nm");
-        if tool.is_file() {
-            return tool;
-        }
-    }
-    PathBuf::from("llvm-nm")
+    xtask::setup::llvm_tool("llvm-nm")
 }
 
 /// The audit finds the double-precision routines the mps2-an386 `f32` snooker build really links

@@ -9,8 +9,6 @@ use std::process::{Command, Stdio};
 
 use object::{Object, ObjectSection, ObjectSymbol, SectionFlags, SectionKind};
 
-pub const EXAMPLE_TARGET: &str = "thumbv6m-none-eabi";
-
 /// A real-board example: its folder under firmware/examples/ and its binary's name.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Example {
@@ -23,7 +21,9 @@ pub struct Example {
 pub const PICO_SSD1306: Example = Example { folder: "pico-ssd1306", binary: "microtrace-pico-ssd1306", chip: &RP2040 };
 /// Raspberry Pi Pico + ST7789 240x240 RGB565 on SPI (mipidsi).
 pub const PICO_ST7789: Example = Example { folder: "pico-st7789", binary: "microtrace-pico-st7789", chip: &RP2040 };
-pub const EXAMPLES: [Example; 2] = [PICO_SSD1306, PICO_ST7789];
+/// Raspberry Pi Pico 2 + the same ST7789, in `f32` on the Cortex-M33's FPU.
+pub const PICO2_ST7789: Example = Example { folder: "pico2-st7789", binary: "microtrace-pico2-st7789", chip: &RP2350 };
+pub const EXAMPLES: [Example; 3] = [PICO_SSD1306, PICO_ST7789, PICO2_ST7789];
 
 /// What an image must fit on the chip.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -40,6 +40,11 @@ pub struct Chip {
     pub ram: Range<u64>,
     /// The family ID its boot ROM wants in a UF2 file.
     pub uf2_family: u32,
+    /// Where the boot ROM looks for the image's metadata block (the RP2350's IMAGE_DEF), if
+    /// the chip wants one.
+    pub image_def: Option<Range<u64>>,
+    /// The rust target of its cores.
+    pub rust_target: &'static str,
 }
 
 pub const RP2040: Chip = Chip {
@@ -49,7 +54,29 @@ pub const RP2040: Chip = Chip {
     boot2: Some(0x1000_0000..0x1000_0100),
     ram: 0x2000_0000..0x2000_0000 + 264 * 1024,
     uf2_family: crate::uf2::RP2040_FAMILY,
+    image_def: None,
+    rust_target: "thumbv6m-none-eabi",
 };
+
+/// The RP2350 of the Pico 2, its Arm cores: no boot2 (the boot ROM sets up the flash itself),
+/// the vector table at the flash's start, and an IMAGE_DEF block in the first 4 KB of flash
+/// (RP2350 datasheet, 5.9). A Pico 2 has 4 MB of flash; 520 KB of SRAM.
+pub const RP2350: Chip = Chip {
+    name: "RP2350",
+    flash: 0x1000_0000..0x1000_0000 + 4 * 1024 * 1024,
+    vector_table: 0x1000_0000,
+    boot2: None,
+    ram: 0x2000_0000..0x2000_0000 + 520 * 1024,
+    uf2_family: crate::uf2::RP2350_ARM_SECURE_FAMILY,
+    image_def: Some(0x1000_0000..0x1000_0000 + 4096),
+    rust_target: "thumbv8m.main-none-eabihf",
+};
+
+/// The RP2350's IMAGE_DEF for a Secure Arm executable, word by word (RP2350 datasheet, 5.9
+/// "Metadata block details", and 5.9.5.1, the minimum Arm IMAGE_DEF): the block's start marker; the IMAGE_TYPE item (0x42, one
+/// word) with flags 0x1021 (an executable, Secure, Arm cores, RP2350); the LAST item (0xff, one
+/// word before it); the link to the next block (0: this block loops to itself); the end marker.
+pub const RP2350_SECURE_ARM_IMAGE_DEF: [u32; 5] = [0xffff_ded3, 0x1021_0142, 0x0000_01ff, 0, 0xab12_3579];
 
 /// What [`check_image`] found in an ELF.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -90,6 +117,9 @@ pub fn check_image(elf: &[u8], chip: &Chip, min_text_bytes: u64, symbols: &[&str
         (None, _) => {}
     }
 
+    if let Some(range) = &chip.image_def {
+        check_image_def(&file, range, &mut problems);
+    }
     let text = section(".text");
     let text_range = text.as_ref().map_or(0..0, |text| text.address()..text.address() + text.size());
     report.text_bytes = text_range.end - text_range.start;
@@ -186,6 +216,24 @@ pub fn check_image(elf: &[u8], chip: &Chip, min_text_bytes: u64, symbols: &[&str
     }
 }
 
+/// The RP2350's IMAGE_DEF: a `.start_block` section within `range` holding exactly
+/// [`RP2350_SECURE_ARM_IMAGE_DEF`].
+fn check_image_def(file: &object::File, range: &Range<u64>, problems: &mut Vec<String>) {
+    let Some(block) = file.section_by_name(".start_block") else {
+        problems.push(format!("no `.start_block` section: the RP2350's boot ROM needs an IMAGE_DEF block in {:#x}..{:#x}", range.start, range.end));
+        return;
+    };
+    let place = block.address()..block.address() + block.size();
+    if !(range.start <= place.start && place.end <= range.end) {
+        problems.push(format!("the IMAGE_DEF block is at {:#x}..{:#x}, not within the first 4 KB of flash {:#x}..{:#x}", place.start, place.end, range.start, range.end));
+    }
+    let words: Vec<u32> = block.data().unwrap_or(&[]).chunks_exact(4).map(|word| u32::from_le_bytes([word[0], word[1], word[2], word[3]])).collect();
+    if words != RP2350_SECURE_ARM_IMAGE_DEF {
+        let hex: Vec<String> = words.iter().map(|word| format!("{word:#010x}")).collect();
+        problems.push(format!("the IMAGE_DEF block is [{}], not a Secure Arm executable's", hex.join(", ")));
+    }
+}
+
 /// Builds every example; returns their ELFs.
 pub fn build_all() -> Result<Vec<PathBuf>, String> {
     EXAMPLES.iter().map(build).collect()
@@ -200,12 +248,13 @@ pub fn uf2_path(elf: &Path) -> PathBuf {
 /// ([`uf2_path`]: every loadable byte, in the chip's family). Installs flip-link (the examples'
 /// linker) when it is missing.
 pub fn build(example: &Example) -> Result<PathBuf, String> {
-    crate::setup::ensure_rust_target(EXAMPLE_TARGET)?;
+    let target = example.chip.rust_target;
+    crate::setup::ensure_rust_target(target)?;
     crate::setup::ensure_cargo_install("flip-link")?;
     let directory = crate::firmware_dir().join("examples").join(example.folder);
     let target_dir = directory.join("target");
     let output = Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
-        .args(["build", "--release", "--quiet", "--target", EXAMPLE_TARGET])
+        .args(["build", "--release", "--quiet", "--target", target])
         .arg("--target-dir")
         .arg(&target_dir)
         .current_dir(&directory)
@@ -219,7 +268,7 @@ pub fn build(example: &Example) -> Result<PathBuf, String> {
     if !output.status.success() {
         return Err(format!("building the example {} failed:\n{}", example.folder, String::from_utf8_lossy(&output.stderr)));
     }
-    let elf = target_dir.join(EXAMPLE_TARGET).join("release").join(example.binary);
+    let elf = target_dir.join(target).join("release").join(example.binary);
     let bytes = std::fs::read(&elf).map_err(|error| format!("{}: {error}", elf.display()))?;
     let uf2 = crate::uf2::from_elf(&bytes, example.chip.flash.clone(), example.chip.uf2_family).map_err(|error| format!("{}: no UF2 file: {error}", elf.display()))?;
     let path = uf2_path(&elf);

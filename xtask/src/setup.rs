@@ -95,3 +95,21 @@ fn apt_install(packages: &[&str]) -> Result<(), String> {
     }
     Ok(())
 }
+
+/// An LLVM tool (`llvm-nm`, `llvm-objdump`): the toolchain's (the llvm-tools component that
+/// scripts/setup.sh adds), else the one on the PATH.
+pub fn llvm_tool(name: &str) -> std::path::PathBuf {
+    let rustc = std::env::var("RUSTC").unwrap_or_else(|_| "rustc".into());
+    let ask = |arguments: &[&str]| {
+        Command::new(&rustc).args(arguments).output().ok().map(|output| String::from_utf8_lossy(&output.stdout).into_owned())
+    };
+    let sysroot = ask(&["--print", "sysroot"]).map(|text| text.trim().to_owned());
+    let host = ask(&["-vV"]).and_then(|text| text.lines().find_map(|line| line.strip_prefix("host: ").map(str::to_owned)));
+    if let (Some(sysroot), Some(host)) = (sysroot, host) {
+        let tool = std::path::PathBuf::from(sysroot).join("lib/rustlib").join(host).join("bin").join(name);
+        if tool.is_file() {
+            return tool;
+        }
+    }
+    std::path::PathBuf::from(name)
+}

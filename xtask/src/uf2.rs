@@ -9,6 +9,9 @@ use std::ops::Range;
 
 /// The RP2040's UF2 family ID.
 pub const RP2040_FAMILY: u32 = 0xe48b_ff56;
+/// The RP2350's family for an image for its Arm cores in the Secure state ("rp2350-arm-s" in
+/// the UF2 specification's uf2families.json, as picotool writes it).
+pub const RP2350_ARM_SECURE_FAMILY: u32 = 0xe48b_ff59;
 /// A block's size in the file.
 pub const BLOCK_BYTES: usize = 512;
 /// The payload of each block the RP2040 takes: one flash page.

@@ -1,9 +1,12 @@
-//! The FPU's square root for the tracer's `f32`: `vsqrt.f32`.
+//! The FPU's square root for the tracer's `f32`: `vsqrt.f32`. One crate for every board with a
+//! single-precision FPU: the QEMU firmware's (firmware/) and the Pico 2 example's. On a target
+//! without the hard-float ABI (no FPU) it is empty.
 //!
 //! The core computes `f32` square roots with libm's `sqrtf`, integer code here (libm has no
 //! ARM implementation), and cannot emit the instruction itself: it is `forbid(unsafe_code)`
-//! and stable `core` has no `f32` square root. So on the boards with an FPU (the mps2-an386's
-//! Cortex-M4F, the mps2-an505's Cortex-M33) build.rs makes the number type
+//! and stable `core` has no `f32` square root (`core::f32::math::sqrt` is unstable in 1.95). So
+//! on the boards with an FPU (the mps2-an386's Cortex-M4F, the mps2-an505's and the RP2350's
+//! Cortex-M33) the firmware's build.rs, and the Pico 2 example, make the number type
 //! `microtrace::number::F32With<VsqrtF32>` for `MICROTRACE_NUMBER=f32`: plain `f32` for every
 //! other operation, and this square root.
 //!
@@ -25,6 +28,9 @@
 //! inlined. (A naked `extern "C"` function, `vsqrt.f32 s0, s0; bx lr`, measured 0.8 % more
 //! instructions on snooker: the call and the registers it clobbers.)
 
+#![no_std]
+#![cfg(target_abi = "eabihf")]
+
 use microtrace::number::SquareRoot;
 
 /// `vsqrt.f32`: `f32` with the FPU's square root (`NAME = "f32"`, as the host's `f32`, since
@@ -43,8 +49,8 @@ impl SquareRoot for VsqrtF32 {
         // memory and no stack, and its result depends only on its input (the rounding mode
         // never changes): `pure, nomem, nostack`. Not `preserves_flags`: VSQRT may set the
         // FPSCR's cumulative exception bits (inexact), which count as flags to `asm!`.
-        // cortex-m-rt enables the FPU before `main`, and build.rs compiles this module only
-        // for the hard-float ABI (thumbv7em-none-eabihf, thumbv8m.main-none-eabihf).
+        // cortex-m-rt enables the FPU before `main`, and the crate is empty but for the
+        // hard-float ABI (thumbv7em-none-eabihf, thumbv8m.main-none-eabihf).
         unsafe {
             core::arch::asm!(
                 "vmov {saved}, s0",
