@@ -908,6 +908,11 @@ function main() {
   const resetVector = flashView.getUint32(vectorTable + 4, true) & ~1;
   const hardFaultVector = flashView.getUint32(vectorTable + 12, true) & ~1;
   const nmiVector = flashView.getUint32(vectorTable + 8, true) & ~1;
+  // The example's own out-of-line `render` (`microtrace_pico_*::render`): the cycle the core
+  // first enters it splits the frame into set-up (boot, clocks, display, parsing and preparing
+  // the scene) and the render with its display traffic.
+  const renderFunction = elf.functions.find((f) => /^microtrace_pico\w*::render$/.test(demangle(f.name).replace(/::h[0-9a-f]{16}$/, '')));
+  const renderEntry = renderFunction ? renderFunction.start : -1;
 
   // The emulated chip
   const rp = new RP2040();
@@ -1110,6 +1115,7 @@ function main() {
           phase = 2;
         }
       }
+      if (pc === renderEntry && milestones.render_entered === undefined) milestones.render_entered = cycles;
       if (pc === hardFaultVector || pc === nmiVector) {
         const name = pc === hardFaultVector ? 'HardFault' : 'NMI';
         failure = `the core entered the ${name} handler at ${hex(pc)} (${symbolAt(elf, pc) ?? '?'}); LR ${hex(core.LR)}`;

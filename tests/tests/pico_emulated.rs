@@ -98,6 +98,11 @@ fn emulate(example: &Example) -> EmulatedRun {
 fn report(example: &Example, run: &EmulatedRun) {
     let at_125_mhz = run.cycles as f64 / 125e6;
     eprintln!("{}: {} emulated Cortex-M0+ cycles to the last display byte ({at_125_mhz:.3} s at 125 MHz)", example.folder, run.cycles);
+    // The harness saw the core enter the example's `render` (the firmware report splits the
+    // frame there), after the boot and before the last display byte.
+    let entered = run.render_entered.unwrap_or_else(|| panic!("{}: no entry into `render` in:\n{}", example.folder, run.summary));
+    assert!(entered > 0 && entered < run.cycles, "{}: `render` entered at cycle {entered} of {}", example.folder, run.cycles);
+    eprintln!("{}: `render` entered at cycle {entered}", example.folder);
 }
 
 #[test]

@@ -25,17 +25,10 @@ pub fn entries_per_object(
         description.optimizations = Optimizations::from_list(optimizations).map_err(|name| format!("unknown optimization `{name}`"))?;
     }
     // The scene is large on the host (512 objects' capacity): prepared on a thread of its own.
-    let entries = std::thread::scope(|scope| {
-        std::thread::Builder::new()
-            .stack_size(64 << 20)
-            .spawn_scoped(scope, || match NumberKind::from_name(number) {
-                // The Cortex-M4F's f32 with `vsqrt.f32` is f32 bit for bit (both correctly rounded).
-                Some(kind) => microtrace::with_number_kind!(kind, N => entries::<N>(&description)),
-                None => Err(format!("unknown number type `{number}`")),
-            })
-            .map_err(|error| format!("cannot start a thread: {error}"))?
-            .join()
-            .map_err(|_| "sizing the grid pool failed".to_owned())?
+    let entries = crate::host_render::on_a_large_stack("sizing the grid pool", || match NumberKind::from_name(number) {
+        // The Cortex-M4F's f32 with `vsqrt.f32` is f32 bit for bit (both correctly rounded).
+        Some(kind) => microtrace::with_number_kind!(kind, N => entries::<N>(&description)),
+        None => Err(format!("unknown number type `{number}`")),
     })?;
     Ok(entries.div_ceil(description.objects.len().max(1)))
 }

@@ -25,17 +25,24 @@ pub fn render(scene: &Path, number: &str, optimizations: &str) -> Result<Vec<u8>
         description.optimizations = Optimizations::from_list(optimizations).map_err(|name| format!("unknown optimization `{name}`"))?;
     }
     // The scene's capacity makes it large: prepared and rendered on a thread of its own.
+    on_a_large_stack("the host render", || match NumberKind::from_name(number) {
+        // The FPU boards' f32 with `vsqrt.f32` is f32 bit for bit (both correctly rounded).
+        Some(kind) => microtrace::with_number_kind!(kind, N => pixels::<N>(&description)),
+        None => Err(format!("unknown number type `{number}`")),
+    })
+}
+
+/// Runs `work` on a thread with a 64 MB stack (a scene of the firmware's parse capacity, 512
+/// objects, is megabytes on the host) and returns what it returns; `what` names it if the
+/// thread cannot start or panics.
+pub fn on_a_large_stack<T: Send>(what: &str, work: impl FnOnce() -> Result<T, String> + Send) -> Result<T, String> {
     std::thread::scope(|scope| {
         std::thread::Builder::new()
             .stack_size(64 << 20)
-            .spawn_scoped(scope, || match NumberKind::from_name(number) {
-                // The FPU boards' f32 with `vsqrt.f32` is f32 bit for bit (both correctly rounded).
-                Some(kind) => microtrace::with_number_kind!(kind, N => pixels::<N>(&description)),
-                None => Err(format!("unknown number type `{number}`")),
-            })
+            .spawn_scoped(scope, work)
             .map_err(|error| format!("cannot start a thread: {error}"))?
             .join()
-            .map_err(|_| "the host render failed".to_owned())?
+            .map_err(|_| format!("{what} failed"))?
     })
 }
 

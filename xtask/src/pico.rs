@@ -39,6 +39,10 @@ pub struct EmulatedRun {
     pub display: Vec<u8>,
     /// Emulated Cortex-M0+ cycles from reset to the last display byte.
     pub cycles: u64,
+    /// The cycle at which the core first entered the example's `render` (the harness's
+    /// `render_entered` milestone): what comes before is booting, the clocks, the display's
+    /// set-up, parsing and preparing the scene.
+    pub render_entered: Option<u64>,
     /// The harness's JSON summary.
     pub summary: String,
 }
@@ -90,7 +94,8 @@ pub fn run(example: &Example, out: &Path) -> Result<EmulatedRun, String> {
     let cycles = number_in(&summary, "cycles_to_last_display_byte").ok_or_else(|| format!("no cycle count in:\n{summary}"))?;
     let path = PathBuf::from(format!("{}{}", prefix.display(), emulation.output));
     let display = std::fs::read(&path).map_err(|error| format!("{}: {error}", path.display()))?;
-    Ok(EmulatedRun { display, cycles, summary })
+    let render_entered = number_in(&summary, "render_entered");
+    Ok(EmulatedRun { display, cycles, render_entered, summary })
 }
 
 /// The whole number after `"key":` in the harness's JSON summary.
@@ -105,9 +110,10 @@ mod tests {
 
     #[test]
     fn numbers_are_read_from_the_summary() {
-        let summary = "{\n  \"ok\": true,\n  \"cycles_to_last_display_byte\": 69983684,\n  \"loaded\": [{\"uf2\": \"x.uf2\", \"blocks\": 394}]\n}";
+        let summary = "{\n  \"ok\": true,\n  \"cycles_to_last_display_byte\": 69983684,\n  \"milestones_cycles\": {\"render_entered\": 10272351},\n  \"loaded\": [{\"uf2\": \"x.uf2\", \"blocks\": 394}]\n}";
         assert_eq!(number_in(summary, "cycles_to_last_display_byte"), Some(69_983_684));
         assert_eq!(number_in(summary, "blocks"), Some(394));
+        assert_eq!(number_in(summary, "render_entered"), Some(10_272_351));
         assert_eq!(number_in(summary, "ok"), None);
         assert_eq!(number_in(summary, "missing"), None);
     }

@@ -71,6 +71,7 @@ pub struct ReportMiss {
     pub scene: String,
     pub board: Board,
     pub number: String,
+    pub primitives: Primitives,
     pub optimizations: &'static str,
     /// `needs 19,548 bytes of RAM (...), the microbit has 16,384`.
     pub reason: String,
@@ -97,6 +98,10 @@ pub struct ExampleRun {
     /// Emulated cycles from reset (the boot ROM, boot2, parsing and preparing the scene
     /// included) to the last byte sent to the display.
     pub cycles: u64,
+    /// Of those, the cycles from reset to the first entry into the example's `render`: the
+    /// set-up (boot, clocks, display, parsing and preparing the scene). The rest is the render
+    /// with its display traffic.
+    pub setup_cycles: u64,
     pub flash_bytes: u64,
     pub static_ram_bytes: u64,
 }
@@ -121,6 +126,7 @@ fn example_runs() -> Result<Vec<ExampleRun>, String> {
             width: size.0,
             height: size.1,
             cycles: run.cycles,
+            setup_cycles: run.render_entered.ok_or_else(|| format!("{}: the harness saw no entry into `render`", example.folder))?,
             flash_bytes: image.flash_bytes,
             static_ram_bytes: image.static_ram_bytes,
         });
@@ -137,10 +143,11 @@ pub fn json_with_examples(runs: &[ReportRun], misses: &[ReportMiss], examples: &
         .iter()
         .map(|miss| {
             format!(
-                "{{\"scene\":\"{}\",\"board\":\"{}\",\"number\":\"{}\",\"optimizations\":\"{}\",\"reason\":\"{}\"}}",
+                "{{\"scene\":\"{}\",\"board\":\"{}\",\"number\":\"{}\",\"primitives\":\"{}\",\"optimizations\":\"{}\",\"reason\":\"{}\"}}",
                 miss.scene,
                 miss.board.name(),
                 miss.number,
+                miss.primitives.name(),
                 miss.optimizations,
                 miss.reason.replace('\\', "\\\\").replace('"', "\\\"")
             )
@@ -150,8 +157,8 @@ pub fn json_with_examples(runs: &[ReportRun], misses: &[ReportMiss], examples: &
         .iter()
         .map(|run| {
             format!(
-                "{{\"example\":\"{}\",\"chip\":\"{}\",\"core\":\"{}\",\"scene\":\"snooker\",\"number\":\"f32\",\"width\":{},\"height\":{},\"cycles\":{},\"flash_bytes\":{},\"static_ram_bytes\":{}}}",
-                run.example, run.chip, run.core, run.width, run.height, run.cycles, run.flash_bytes, run.static_ram_bytes
+                "{{\"example\":\"{}\",\"chip\":\"{}\",\"core\":\"{}\",\"scene\":\"snooker\",\"number\":\"f32\",\"width\":{},\"height\":{},\"cycles\":{},\"setup_cycles\":{},\"flash_bytes\":{},\"static_ram_bytes\":{}}}",
+                run.example, run.chip, run.core, run.width, run.height, run.cycles, run.setup_cycles, run.flash_bytes, run.static_ram_bytes
             )
         })
         .collect();
@@ -168,13 +175,15 @@ fn examples_markdown(examples: &[ExampleRun]) -> String {
          from the RP2040's boot ROM (`tests/tests/pico_emulated.rs` checks their pictures against the\n\
          host's): snooker in `f32` at the display's size. **These are cycles**, emulated, from reset\n\
          (the boot ROM, boot2, parsing and preparing the scene) to the last byte sent to the display;\n\
-         rp2040js models no flash (XIP) or bus wait states.\n\n\
-         | example | chip | core | size | cycles | at 125 MHz | flash bytes | static RAM bytes |\n\
-         |---|---|---|---|---:|---:|---:|---:|\n",
+         rp2040js models no flash (XIP) or bus wait states. `set-up` is the cycles before the example's\n\
+         `render` is first entered (boot, clocks, the display's set-up, parsing and preparing the scene\n\
+         on the device), `render` the rest (the render and its display traffic).\n\n\
+         | example | chip | core | size | cycles | at 125 MHz | set-up cycles | render cycles | flash bytes | static RAM bytes |\n\
+         |---|---|---|---|---:|---:|---:|---:|---:|---:|\n",
     );
     for run in examples {
         text += &format!(
-            "| {} | {} | {} | {}x{} | {} | {:.2} s | {} | {} |\n",
+            "| {} | {} | {} | {}x{} | {} | {:.2} s | {} | {} | {} | {} |\n",
             run.example,
             run.chip,
             run.core,
@@ -182,6 +191,8 @@ fn examples_markdown(examples: &[ExampleRun]) -> String {
             run.height,
             thousands(run.cycles),
             run.cycles as f64 / 125e6,
+            thousands(run.setup_cycles),
+            thousands(run.cycles.saturating_sub(run.setup_cycles)),
             thousands(run.flash_bytes),
             thousands(run.static_ram_bytes)
         );
@@ -304,7 +315,7 @@ pub fn run(filter: &ReportFilter) -> Result<Vec<ReportRun>, String> {
             Err(error) => match does_not_fit(&error) {
                 Some(reason) => {
                     println!("    does not fit: {reason}");
-                    misses.push(ReportMiss { scene: stem, board: *board, number: (*number).to_owned(), optimizations, reason });
+                    misses.push(ReportMiss { scene: stem, board: *board, number: (*number).to_owned(), primitives: *primitives, optimizations, reason });
                     continue;
                 }
                 None => return Err(format!("{label}: {error}")),
@@ -479,9 +490,9 @@ pub fn markdown(runs: &[ReportRun], misses: &[ReportMiss]) -> String {
         text += "\nBuilds the board's RAM cannot hold (the build's RAM check, firmware/src/ram.rs: the prepared\n\
                  scene and the stack it reserves; `--stack-reserve` trades the reserve for the risk of an\n\
                  overflow, which the firmware then reports):\n\n\
-                 | scene | board | number | optimizations | why |\n|---|---|---|---|---|\n";
+                 | scene | board | number | primitives | optimizations | why |\n|---|---|---|---|---|---|\n";
         for miss in misses {
-            text += &format!("| {} | {} | {} | {} | {} |\n", miss.scene, miss.board.name(), miss.number, miss.optimizations, miss.reason);
+            text += &format!("| {} | {} | {} | {} | {} | {} |\n", miss.scene, miss.board.name(), miss.number, miss.primitives.name(), miss.optimizations, miss.reason);
         }
     }
     text += &without_optimizations(runs);
@@ -650,22 +661,33 @@ mod tests {
 
     #[test]
     fn the_examples_follow_the_runs_in_the_json_and_get_their_own_table() {
-        let example = ExampleRun { example: "pico-ssd1306", chip: "RP2040", core: "Cortex-M0+", width: 128, height: 64, cycles: 69_983_684, flash_bytes: 100_836, static_ram_bytes: 9_000 };
+        let example = ExampleRun {
+            example: "pico-ssd1306",
+            chip: "RP2040",
+            core: "Cortex-M0+",
+            width: 128,
+            height: 64,
+            cycles: 69_983_684,
+            setup_cycles: 10_272_351,
+            flash_bytes: 100_836,
+            static_ram_bytes: 9_000,
+        };
         let miss = ReportMiss {
             scene: "lattice".into(),
             board: Board::Microbit,
             number: "f64".into(),
+            primitives: Primitives::Scene,
             optimizations: "scene",
             reason: "needs 24,552 bytes of RAM (the prepared scene 15,280 for 54 objects in f64, \"x\"), the microbit has 16,384".into(),
         };
         let text = json_with_examples(&[], std::slice::from_ref(&miss), std::slice::from_ref(&example));
         assert_eq!(
             text,
-            "{\"runs\":[\n\n],\n\"did_not_fit\":[\n{\"scene\":\"lattice\",\"board\":\"microbit\",\"number\":\"f64\",\"optimizations\":\"scene\",\
-             \"reason\":\"needs 24,552 bytes of RAM (the prepared scene 15,280 for 54 objects in f64, \\\"x\\\"), the microbit has 16,384\"}\n],\n\"examples\":[\n{\"example\":\"pico-ssd1306\",\"chip\":\"RP2040\",\"core\":\"Cortex-M0+\",\"scene\":\"snooker\",\"number\":\"f32\",\"width\":128,\"height\":64,\"cycles\":69983684,\"flash_bytes\":100836,\"static_ram_bytes\":9000}\n]}\n"
+            "{\"runs\":[\n\n],\n\"did_not_fit\":[\n{\"scene\":\"lattice\",\"board\":\"microbit\",\"number\":\"f64\",\"primitives\":\"scene\",\"optimizations\":\"scene\",\
+             \"reason\":\"needs 24,552 bytes of RAM (the prepared scene 15,280 for 54 objects in f64, \\\"x\\\"), the microbit has 16,384\"}\n],\n\"examples\":[\n{\"example\":\"pico-ssd1306\",\"chip\":\"RP2040\",\"core\":\"Cortex-M0+\",\"scene\":\"snooker\",\"number\":\"f32\",\"width\":128,\"height\":64,\"cycles\":69983684,\"setup_cycles\":10272351,\"flash_bytes\":100836,\"static_ram_bytes\":9000}\n]}\n"
         );
         let table = examples_markdown(&[example]);
-        assert!(table.contains("| pico-ssd1306 | RP2040 | Cortex-M0+ | 128x64 | 69,983,684 | 0.56 s | 100,836 | 9,000 |\n"), "{table}");
+        assert!(table.contains("| pico-ssd1306 | RP2040 | Cortex-M0+ | 128x64 | 69,983,684 | 0.56 s | 10,272,351 | 59,711,333 | 100,836 | 9,000 |\n"), "{table}");
         assert_eq!(examples_markdown(&[]), "");
     }
 
