@@ -953,9 +953,15 @@ function main() {
   let lastDisplayCycle = -1;
   let firstDisplayCycle = -1;
   let cycles = 0;
+  // Instructions executed, beside the cycles: the figure QEMU's plugin counts for the firmware,
+  // so the two emulators' counts compare (docs: firmware/README.md, "The Cortex-M0").
+  let instructions = 0;
+  let lastDisplayInstruction = -1;
+  let renderEnteredInstruction = -1;
   const displayByte = () => {
     if (firstDisplayCycle < 0) firstDisplayCycle = cycles;
     lastDisplayCycle = cycles;
+    lastDisplayInstruction = instructions;
   };
   let oled = null;
   let panel = null;
@@ -1104,6 +1110,7 @@ function main() {
       }
       const delta = core.executeInstruction();
       cycles += delta;
+      instructions += 1;
       clock.tick(delta * NANOS_PER_CYCLE);
       const pc = core.PC;
       if (phase < 2) {
@@ -1115,7 +1122,10 @@ function main() {
           phase = 2;
         }
       }
-      if (pc === renderEntry && milestones.render_entered === undefined) milestones.render_entered = cycles;
+      if (pc === renderEntry && milestones.render_entered === undefined) {
+        milestones.render_entered = cycles;
+        renderEnteredInstruction = instructions;
+      }
       if (pc === hardFaultVector || pc === nmiVector) {
         const name = pc === hardFaultVector ? 'HardFault' : 'NMI';
         failure = `the core entered the ${name} handler at ${hex(pc)} (${symbolAt(elf, pc) ?? '?'}); LR ${hex(core.LR)}`;
@@ -1264,6 +1274,8 @@ function main() {
     stop_reason: stopReason,
     cycles_to_first_display_byte: firstDisplayCycle >= 0 ? firstDisplayCycle : null,
     cycles_to_last_display_byte: lastDisplayCycle >= 0 ? lastDisplayCycle : null,
+    instructions_to_last_display_byte: lastDisplayInstruction >= 0 ? lastDisplayInstruction : null,
+    instructions_to_render_entered: renderEnteredInstruction >= 0 ? renderEnteredInstruction : null,
     total_cycles: cycles,
     idle_cycles_skipped: idleCycles,
     emulated_ms_to_last_display_byte: lastDisplayCycle >= 0 ? +((lastDisplayCycle / CLOCK_HZ) * 1000).toFixed(3) : null,

@@ -103,6 +103,9 @@ fn report(example: &Example, run: &EmulatedRun) {
     let entered = run.render_entered.unwrap_or_else(|| panic!("{}: no entry into `render` in:\n{}", example.folder, run.summary));
     assert!(entered > 0 && entered < run.cycles, "{}: `render` entered at cycle {entered} of {}", example.folder, run.cycles);
     eprintln!("{}: `render` entered at cycle {entered}", example.folder);
+    // And it counted the instructions: fewer than the cycles (none takes less than one).
+    let instructions = run.instructions.unwrap_or_else(|| panic!("{}: no instruction count in:\n{}", example.folder, run.summary));
+    assert!(instructions > 0 && instructions <= run.cycles, "{}: {instructions} instructions in {} cycles", example.folder, run.cycles);
 }
 
 #[test]

@@ -43,6 +43,10 @@ pub struct EmulatedRun {
     /// `render_entered` milestone): what comes before is booting, the clocks, the display's
     /// set-up, parsing and preparing the scene.
     pub render_entered: Option<u64>,
+    /// Instructions executed from reset to the last display byte, and to the entry into
+    /// `render` (what QEMU's plugin counts for the firmware, so the two compare).
+    pub instructions: Option<u64>,
+    pub render_entered_instructions: Option<u64>,
     /// The harness's JSON summary.
     pub summary: String,
 }
@@ -95,7 +99,9 @@ pub fn run(example: &Example, out: &Path) -> Result<EmulatedRun, String> {
     let path = PathBuf::from(format!("{}{}", prefix.display(), emulation.output));
     let display = std::fs::read(&path).map_err(|error| format!("{}: {error}", path.display()))?;
     let render_entered = number_in(&summary, "render_entered");
-    Ok(EmulatedRun { display, cycles, render_entered, summary })
+    let instructions = number_in(&summary, "instructions_to_last_display_byte");
+    let render_entered_instructions = number_in(&summary, "instructions_to_render_entered");
+    Ok(EmulatedRun { display, cycles, render_entered, instructions, render_entered_instructions, summary })
 }
 
 /// The whole number after `"key":` in the harness's JSON summary.

@@ -102,6 +102,9 @@ pub struct ExampleRun {
     /// set-up (boot, clocks, display, parsing and preparing the scene). The rest is the render
     /// with its display traffic.
     pub setup_cycles: u64,
+    /// Instructions executed from reset to the last display byte, and before `render`.
+    pub instructions: u64,
+    pub setup_instructions: u64,
     pub flash_bytes: u64,
     pub static_ram_bytes: u64,
 }
@@ -127,6 +130,8 @@ fn example_runs() -> Result<Vec<ExampleRun>, String> {
             height: size.1,
             cycles: run.cycles,
             setup_cycles: run.render_entered.ok_or_else(|| format!("{}: the harness saw no entry into `render`", example.folder))?,
+            instructions: run.instructions.ok_or_else(|| format!("{}: the harness counted no instructions", example.folder))?,
+            setup_instructions: run.render_entered_instructions.ok_or_else(|| format!("{}: the harness saw no entry into `render`", example.folder))?,
             flash_bytes: image.flash_bytes,
             static_ram_bytes: image.static_ram_bytes,
         });
@@ -157,8 +162,8 @@ pub fn json_with_examples(runs: &[ReportRun], misses: &[ReportMiss], examples: &
         .iter()
         .map(|run| {
             format!(
-                "{{\"example\":\"{}\",\"chip\":\"{}\",\"core\":\"{}\",\"scene\":\"snooker\",\"number\":\"f32\",\"width\":{},\"height\":{},\"cycles\":{},\"setup_cycles\":{},\"flash_bytes\":{},\"static_ram_bytes\":{}}}",
-                run.example, run.chip, run.core, run.width, run.height, run.cycles, run.setup_cycles, run.flash_bytes, run.static_ram_bytes
+                "{{\"example\":\"{}\",\"chip\":\"{}\",\"core\":\"{}\",\"scene\":\"snooker\",\"number\":\"f32\",\"width\":{},\"height\":{},\"cycles\":{},\"setup_cycles\":{},\"instructions\":{},\"setup_instructions\":{},\"flash_bytes\":{},\"static_ram_bytes\":{}}}",
+                run.example, run.chip, run.core, run.width, run.height, run.cycles, run.setup_cycles, run.instructions, run.setup_instructions, run.flash_bytes, run.static_ram_bytes
             )
         })
         .collect();
@@ -177,13 +182,14 @@ fn examples_markdown(examples: &[ExampleRun]) -> String {
          (the boot ROM, boot2, parsing and preparing the scene) to the last byte sent to the display;\n\
          rp2040js models no flash (XIP) or bus wait states. `set-up` is the cycles before the example's\n\
          `render` is first entered (boot, clocks, the display's set-up, parsing and preparing the scene\n\
-         on the device), `render` the rest (the render and its display traffic).\n\n\
-         | example | chip | core | size | cycles | at 125 MHz | set-up cycles | render cycles | flash bytes | static RAM bytes |\n\
-         |---|---|---|---|---:|---:|---:|---:|---:|---:|\n",
+         on the device), `render` the rest (the render and its display traffic); the instructions\n\
+         executed are counted beside the cycles, as QEMU counts the firmware's.\n\n\
+         | example | chip | core | size | cycles | at 125 MHz | set-up cycles | render cycles | render instructions | flash bytes | static RAM bytes |\n\
+         |---|---|---|---|---:|---:|---:|---:|---:|---:|---:|\n",
     );
     for run in examples {
         text += &format!(
-            "| {} | {} | {} | {}x{} | {} | {:.2} s | {} | {} | {} | {} |\n",
+            "| {} | {} | {} | {}x{} | {} | {:.2} s | {} | {} | {} | {} | {} |\n",
             run.example,
             run.chip,
             run.core,
@@ -193,6 +199,7 @@ fn examples_markdown(examples: &[ExampleRun]) -> String {
             run.cycles as f64 / 125e6,
             thousands(run.setup_cycles),
             thousands(run.cycles.saturating_sub(run.setup_cycles)),
+            thousands(run.instructions.saturating_sub(run.setup_instructions)),
             thousands(run.flash_bytes),
             thousands(run.static_ram_bytes)
         );
@@ -669,6 +676,8 @@ mod tests {
             height: 64,
             cycles: 69_983_684,
             setup_cycles: 10_272_351,
+            instructions: 50_000_000,
+            setup_instructions: 8_000_000,
             flash_bytes: 100_836,
             static_ram_bytes: 9_000,
         };
@@ -684,10 +693,10 @@ mod tests {
         assert_eq!(
             text,
             "{\"runs\":[\n\n],\n\"did_not_fit\":[\n{\"scene\":\"lattice\",\"board\":\"microbit\",\"number\":\"f64\",\"primitives\":\"scene\",\"optimizations\":\"scene\",\
-             \"reason\":\"needs 24,552 bytes of RAM (the prepared scene 15,280 for 54 objects in f64, \\\"x\\\"), the microbit has 16,384\"}\n],\n\"examples\":[\n{\"example\":\"pico-ssd1306\",\"chip\":\"RP2040\",\"core\":\"Cortex-M0+\",\"scene\":\"snooker\",\"number\":\"f32\",\"width\":128,\"height\":64,\"cycles\":69983684,\"setup_cycles\":10272351,\"flash_bytes\":100836,\"static_ram_bytes\":9000}\n]}\n"
+             \"reason\":\"needs 24,552 bytes of RAM (the prepared scene 15,280 for 54 objects in f64, \\\"x\\\"), the microbit has 16,384\"}\n],\n\"examples\":[\n{\"example\":\"pico-ssd1306\",\"chip\":\"RP2040\",\"core\":\"Cortex-M0+\",\"scene\":\"snooker\",\"number\":\"f32\",\"width\":128,\"height\":64,\"cycles\":69983684,\"setup_cycles\":10272351,\"instructions\":50000000,\"setup_instructions\":8000000,\"flash_bytes\":100836,\"static_ram_bytes\":9000}\n]}\n"
         );
         let table = examples_markdown(&[example]);
-        assert!(table.contains("| pico-ssd1306 | RP2040 | Cortex-M0+ | 128x64 | 69,983,684 | 0.56 s | 10,272,351 | 59,711,333 | 100,836 | 9,000 |\n"), "{table}");
+        assert!(table.contains("| pico-ssd1306 | RP2040 | Cortex-M0+ | 128x64 | 69,983,684 | 0.56 s | 10,272,351 | 59,711,333 | 42,000,000 | 100,836 | 9,000 |\n"), "{table}");
         assert_eq!(examples_markdown(&[]), "");
     }
 
