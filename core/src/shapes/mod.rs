@@ -22,9 +22,15 @@ mod cone;
 mod cube;
 #[cfg(feature = "cylinder")]
 mod cylinder;
+#[cfg(feature = "torus")]
+mod polynomial;
 mod quadratic;
 #[cfg(feature = "sphere")]
 mod sphere;
+/// The ring torus's intersection (§5.2.1), ahead of its place among the primitives: the
+/// format's `torus R`, its bounding volume and CSG come with the issue "CSG and the torus".
+#[cfg(feature = "torus")]
+pub mod torus;
 
 pub use bounds::{Interval, ScaledInterval};
 pub use hit::Hit;
