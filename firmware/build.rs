@@ -329,7 +329,7 @@ fn check_primitives<const N: usize>(description: &SceneDescription<N>, scene_pat
     for primitive in Primitive::ALL {
         let feature = format!("CARGO_FEATURE_{}", primitive.name().to_uppercase());
         let enabled = env(&feature).is_some();
-        if let Some(object) = description.objects.iter().find(|object| object.primitive == primitive) {
+        if let Some(object) = description.objects.iter().find(|object| object.primitive.index() == primitive.index()) {
             if !enabled {
                 fail(&format!(
                     "{}:line {}: the scene uses a {name} but the firmware was built without the `{name}` feature; \

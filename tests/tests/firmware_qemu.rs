@@ -282,6 +282,30 @@ fn lattice_in_fixed_point_on_lm3s6965evb_matches_the_host() {
     firmware_matches_host_in::<microtrace::number::Fixed>("lattice.mts", Board::Lm3s6965evb);
 }
 
+/// The ring torus (scenes/torus.mts) on the chip: the host's picture in `f32` on the M4F and in
+/// `soft32` on the M3, and its intersection linked only there (snooker links none of it).
+#[test]
+fn the_torus_on_mps2_an386_matches_the_host() {
+    let run = run_firmware("torus.mts", Board::Mps2An386);
+    let (_, expected, statistics) = host_render("torus.mts");
+    let framebuffer = std::fs::read(&run.framebuffer).unwrap();
+    assert_eq!(framebuffer, expected, "torus.mts: the framebuffer differs from the host render");
+    assert_eq!(run.numbers["ro_tests"], statistics.ro_tests);
+    linked_code_is_clean("torus.mts", Board::Mps2An386, &run.numbers);
+    assert!(links_the_torus(&run.elf), "torus.mts: the torus's intersection is not linked");
+    assert!(!links_the_torus(&run_firmware("snooker.mts", Board::Mps2An386).elf), "snooker links the torus");
+}
+
+#[test]
+fn the_torus_in_soft32_on_lm3s6965evb_matches_the_host() {
+    firmware_matches_host_in::<microtrace::number::SoftFloat>("torus.mts", Board::Lm3s6965evb);
+}
+
+fn links_the_torus(elf: &std::path::Path) -> bool {
+    let names = xtask::elf::symbol_names(&std::fs::read(elf).unwrap()).unwrap();
+    names.iter().any(|name| name.contains("shapes::torus") || name.contains("shapes::polynomial"))
+}
+
 #[test]
 fn snooker_in_fixed_point_on_microbit_matches_the_host() {
     firmware_matches_host_in::<microtrace::number::Fixed>("snooker.mts", Board::Microbit);

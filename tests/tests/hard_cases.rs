@@ -21,7 +21,7 @@
 use microtrace::camera::PixelPosition;
 use microtrace::geometry::{Ray, Vector3};
 use microtrace::number::{F32Micro, Fixed, Fixed16, Number, SoftFloat};
-use microtrace::model::{SceneError, SceneErrorKind};
+use microtrace::model::{Primitive, SceneError, SceneErrorKind};
 use microtrace::pixel::FrameBuffer;
 use microtrace::render::{Pga, ShadedPixel, Statistics, Whole, in_shadow, nearest_hit, shade_pixel, shadow_origin};
 use microtrace::model::SceneDescription;
@@ -139,8 +139,12 @@ struct Measurement {
     other_object: usize,
     identical: usize,
     not_finite: usize,
-    /// Largest |t − t_f64| / max(1, t_f64) where both hit the same object.
+    /// Largest |t − t_f64| / max(1, t_f64) where both hit the same part of the same object.
     depth_error: f64,
+    /// Pixels where both hit the same torus but on different parts of it (the depths more than
+    /// 10⁻³ apart): a ray that grazes the tube in one type and passes it in the other, the
+    /// non-convex object's own silhouette. Counted with the flips.
+    other_part: usize,
     lit_points: usize,
     acne: usize,
     /// Lit points the type calls shadowed by a blocker away from the point: a shadow's edge
@@ -150,14 +154,21 @@ struct Measurement {
 }
 
 impl Measurement {
-    fn of(reference: &Rendering, image: &Rendering) -> Self {
+    /// `non_convex[i]`: object `i` is a torus.
+    fn of(reference: &Rendering, image: &Rendering, non_convex: &[bool]) -> Self {
         let mut m = Measurement { pixels: reference.indices.len(), ..Default::default() };
         m.identical = reference.indices.iter().zip(&image.indices).filter(|(a, b)| a == b).count();
         for (expected, found) in reference.traces.iter().zip(&image.traces) {
             m.not_finite += usize::from(!found.finite);
             match (expected.object, found.object) {
                 (Some(a), Some(b)) if a == b => {
-                    m.depth_error = m.depth_error.max((found.t - expected.t).abs() / expected.t.max(1.0));
+                    let error = (found.t - expected.t).abs() / expected.t.max(1.0);
+                    if error > 1e-3 && non_convex.get(a).copied().unwrap_or(false) {
+                        m.other_part += 1;
+                        m.flips += 1;
+                        continue;
+                    }
+                    m.depth_error = m.depth_error.max(error);
                     if expected.faces_light && found.faces_light && !expected.shadowed {
                         m.lit_points += 1;
                         m.acne += usize::from(found.shadowed && found.blocked_at_the_point);
@@ -257,6 +268,13 @@ const CASES: &[Case] = &[
     // soft32 on none of it: 15 pixels in all).
     Case { file: "exact_ties.mts", f32: Measured(bound(0.0055, 0.99, 0.0005, 0.001)), fixed: Measured(bound(0.0165, 0.981, 0.0005, 0.001)), fixed16: Measured(bound(0.0165, 0.98, 0.0005, 0.001)), micromath: Measured(bound(0.0055, 0.798, 0.0005, 0.001)), soft32: Measured(bound(0.0065, 0.992, 0.0005, 0.001)) },
     Case { file: "shadow_acne.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.000653, 0.983, 0.0005, 0.32)), micromath: Measured(bound(0.00103, 0.969, 0.0005, 0.104)), soft32: Targets },
+    // The ring torus (§5.2.1): its quartic's failures in the textbook solvers (shapes/torus.rs).
+    // The coarse types' flips are mostly the torus's other part: their depths differ from f64's
+    // by more than 10⁻³ (their resolution), which on a non-convex object is counted as a flip.
+    Case { file: "torus_grazing.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.0025, 0.996, 0.0005, 0.002)), micromath: Measured(bound(0.25, 0.89, 0.0005, 0.002)), soft32: Targets },
+    Case { file: "torus_inside_tube.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.27, 0.993, 0.0005, 0.002)), micromath: Measured(bound(0.97, 0.56, 0.0005, 0.005)), soft32: Targets },
+    Case { file: "torus_axis_hole.mts", f32: Targets, fixed: Targets, fixed16: Measured(bound(0.0025, 0.99, 0.0005, 0.002)), micromath: Measured(bound(0.15, 0.51, 0.0005, 0.002)), soft32: Targets },
+    Case { file: "torus_large.mts", f32: Targets, fixed: Targets, fixed16: Rejected, micromath: Measured(bound(0.09, 0.945, 0.0005, 0.002)), soft32: Targets },
 ];
 
 /// Renders `case` in `N`, checks what `expect` asks against the `f64` reference, and returns a
@@ -280,7 +298,8 @@ fn check<N: Number>(file: &str, description: &SceneDescription<CAPACITY>, refere
         }
         (Ok(rendering), _) => rendering,
     };
-    let m = Measurement::of(reference, &rendering);
+    let non_convex: Vec<bool> = description.objects.iter().map(|object| matches!(object.primitive, Primitive::Torus(_))).collect();
+    let m = Measurement::of(reference, &rendering, &non_convex);
     // HARD_CASE_DEBUG=<file>:<type> lists that case's flipped pixels.
     if std::env::var("HARD_CASE_DEBUG").is_ok_and(|wanted| wanted == format!("{file}:{name}")) {
         let width = usize::from(description.viewport.width());
@@ -292,9 +311,10 @@ fn check<N: Number>(file: &str, description: &SceneDescription<CAPACITY>, refere
         }
     }
     let line = format!(
-        "{file:32} {name:14} identical {:8.4}%  flips {:4}  other object {:4}  shadow edge {:3}  acne {:4}/{:5} ({:.4}%)  self-blocked {:5} ({:6.2}%)  depth error {:.1e}",
+        "{file:32} {name:14} identical {:8.4}%  flips {:4} (torus's other part {})  other object {:4}  shadow edge {:3}  acne {:4}/{:5} ({:.4}%)  self-blocked {:5} ({:6.2}%)  depth error {:.1e}",
         m.identical_share() * 100.0,
         m.flips,
+        m.other_part,
         m.other_object,
         m.shadow_edge,
         m.acne,

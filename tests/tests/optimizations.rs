@@ -12,7 +12,7 @@ use microtrace::optimize::extents::Extent;
 use microtrace::optimize::Acceleration;
 use microtrace::pixel::FrameBuffer;
 use microtrace::render::{Pga, Rgb, Statistics, Whole};
-use microtrace::model::{Light, Material, ObjectDescription, Optimizations, Primitive, Projection, SceneDescription, Viewport, Window};
+use microtrace::model::{Light, Material, ObjectDescription, Optimizations, Primitive, Projection, SceneDescription, Tube, Viewport, Window};
 use microtrace::scene::Scene;
 
 const CAPACITY: usize = 64;
@@ -159,7 +159,11 @@ fn random_scene(seed: u64) -> SceneDescription<CAPACITY> {
     }
     let count = 1 + rng.below(10) as usize;
     for i in 0..count {
-        let primitive = Primitive::ALL[rng.below(4) as usize];
+        let primitive = match Primitive::ALL[rng.below(Primitive::ALL.len() as u64) as usize] {
+            // Tori of any tube, thin to fat.
+            Primitive::Torus(_) => Primitive::Torus(Tube::from_f64(rng.range(0.05, 0.95)).unwrap()),
+            other => other,
+        };
         let mut object = ObjectDescription::new(primitive, i as u32 + 1);
         let centre = targets[rng.below(targets.len() as u64) as usize];
         let jitter = half * 0.3;
@@ -252,7 +256,7 @@ fn eye_plane_scene(seed: u64) -> SceneDescription<CAPACITY> {
     }
     // Objects of any kind around the eye plane, and some in view.
     for _ in 0..1 + rng.below(5) {
-        let primitive = Primitive::ALL[rng.below(4) as usize];
+        let primitive = Primitive::ALL[rng.below(Primitive::ALL.len() as u64) as usize];
         let o = [rng.range(scene.window.x1, scene.window.x2), rng.range(scene.window.y1, scene.window.y2)];
         let s = if rng.below(2) == 0 { rng.range(-0.2, 0.3) } else { rng.range(0.5, 3.0) };
         let mut centre = along(s, o);
@@ -328,12 +332,14 @@ fn random_scenes_render_identically_under_every_combination() {
 
 #[test]
 fn thesis_scenes_at_132x120_render_identically_under_every_combination() {
-    for name in ["snooker.mts", "lattice.mts"] {
+    // And the torus scene (scenes/torus.mts), whose table fills most of the picture: there the
+    // optimizations save about half the tests (asserted: some), not the thesis scenes' four fifths.
+    for (name, saving) in [("snooker.mts", 5), ("lattice.mts", 5), ("torus.mts", 1)] {
         let mut scene = load(name);
         scene.fit_to_size(132, 120);
         for rgb in [false, true] {
             let (all, none) = all_combinations_match::<f64>(&scene, rgb, name);
-            assert!(all.ro_tests * 5 < none.ro_tests, "{name}: all-on saves too little: {all:?} vs {none:?}");
+            assert!(all.ro_tests * saving < none.ro_tests, "{name}: all-on saves too little: {all:?} vs {none:?}");
             all_combinations_match::<f32>(&scene, rgb, name);
         }
     }

@@ -311,13 +311,13 @@ fn check_options(options: &FirmwareOptions) -> Result<(), String> {
     Ok(())
 }
 
-/// The `cube`/`sphere`/`cylinder`/`cone` features the scene needs, `ray-tree` when its
+/// The `cube`/`sphere`/`cylinder`/`cone`/`torus` features the scene needs, `ray-tree` when its
 /// objects reflect or transmit and `antialias` when it antialiases (the firmware models only those), parsing it with the same parser as the firmware's build script.
 fn primitive_features(scene: &Path) -> Result<Vec<&'static str>, String> {
     let description = parse_scene(scene)?;
     let mut features: Vec<&'static str> = Primitive::ALL
         .into_iter()
-        .filter(|primitive| description.objects.iter().any(|object| object.primitive == *primitive))
+        .filter(|primitive| description.objects.iter().any(|object| object.primitive.index() == primitive.index()))
         .map(Primitive::name)
         .collect();
     // The ray tree, when an object reflects or transmits (chapter 5).

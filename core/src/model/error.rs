@@ -162,7 +162,7 @@ impl fmt::Display for SceneErrorKind {
             Self::ObjectRequired { keyword } => write!(
                 f,
                 "`{keyword}` changes the most recent object, but no object has started yet \
-                 (start one with cube, sphere, cylinder or cone)"
+                 (start one with cube, sphere, cylinder, cone or torus)"
             ),
             Self::TooManyObjects { capacity } => {
                 write!(f, "too many objects: this build holds at most {capacity}")

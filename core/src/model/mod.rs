@@ -28,5 +28,5 @@ pub use light::{Light, LightSource, MAX_LIGHTS};
 pub use material::{Material, PreparedMaterial};
 pub use object::{Object, Objects};
 pub use optimizations::Optimizations;
-pub use primitive::Primitive;
+pub use primitive::{Primitive, Tube};
 pub use view::{Projection, Viewport, Window};

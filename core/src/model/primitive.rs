@@ -1,8 +1,9 @@
-//! The primitives: one closed set (§4.2.5). A new primitive joins here (its variant, keyword
+//! The primitives: one closed set (§4.2.5, and §5.2.1's torus). A new primitive joins here (its variant, keyword
 //! and feature), in `shapes/` (its intersection) and in `optimize/bounding_volume.rs` (its
 //! bounding volume); docs/architecture.md has the checklist.
 
-/// The four unit primitives of §4.2.5 (fig 4.6), in the thesis's enum order.
+/// The four unit primitives of §4.2.5 (fig 4.6), in the thesis's enum order, and the ring torus
+/// §5.2.1 proposes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Primitive {
     /// The unit cube `[0,1]^3`.
@@ -13,10 +14,73 @@ pub enum Primitive {
     Cylinder,
     /// Apex at the origin, base of radius 1 at z = 1, capped.
     Cone,
+    /// The circle of radius 1 about +z in the plane z = 0, swept by a tube of the given radius
+    /// (`torus R`, 0 < R < 1: a ring torus).
+    Torus(Tube),
+}
+
+/// A ring torus's tube radius, in steps of 2⁻¹⁵ of its major radius (1 to 32767 steps): the
+/// format's `torus R` rounded to the nearest step. Whole steps keep `Primitive` a plain value
+/// (no number type in the scene's description) and give the radius in every number type
+/// exactly, Q16.16 included (`radius`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Tube(u16);
+
+impl Tube {
+    /// A step is 2^`STEP_EXPONENT`.
+    pub const STEP_EXPONENT: i32 = -15;
+    /// `torus 0.25`: the radius `Primitive::ALL` names the torus by.
+    pub const QUARTER: Tube = Tube(1 << 13);
+
+    /// `radius` rounded to the nearest step; `None` unless it is a ring torus's, `0 < radius < 1`
+    /// (and at least half a step).
+    pub fn from_f64(radius: f64) -> Option<Self> {
+        let steps = libm::round(libm::ldexp(radius, -Self::STEP_EXPONENT));
+        (radius > 0.0 && radius < 1.0 && (1.0..32768.0).contains(&steps)).then_some(Tube(steps as u16))
+    }
+
+    /// The radius, exactly.
+    pub fn to_f64(self) -> f64 {
+        libm::ldexp(f64::from(self.0), Self::STEP_EXPONENT)
+    }
+
+    /// The radius in a number type: an integer times a power of two, exact in every type.
+    pub fn radius<N: crate::number::Number>(self) -> N {
+        N::from_i32(i32::from(self.0)).times_power_of_two(Self::STEP_EXPONENT)
+    }
+
+    /// The radius in steps (what the firmware's scene constants write).
+    pub const fn steps(self) -> u16 {
+        self.0
+    }
+
+    /// From a number of steps, clamped to 1 ..= 32767 (the firmware's scene constants, which
+    /// write `steps()` of a valid tube).
+    pub const fn from_steps(steps: u16) -> Self {
+        if steps == 0 {
+            Tube(1)
+        } else if steps > 32767 {
+            Tube(32767)
+        } else {
+            Tube(steps)
+        }
+    }
 }
 
 impl Primitive {
-    pub const ALL: [Primitive; 4] = [Primitive::Cube, Primitive::Sphere, Primitive::Cylinder, Primitive::Cone];
+    /// One of each kind (the torus with a quarter tube): for the keywords, the features, tests.
+    pub const ALL: [Primitive; 5] = [Primitive::Cube, Primitive::Sphere, Primitive::Cylinder, Primitive::Cone, Primitive::Torus(Tube::QUARTER)];
+
+    /// The kind's place in [`Primitive::ALL`] (a torus of any tube is 4).
+    pub const fn index(self) -> usize {
+        match self {
+            Primitive::Cube => 0,
+            Primitive::Sphere => 1,
+            Primitive::Cylinder => 2,
+            Primitive::Cone => 3,
+            Primitive::Torus(_) => 4,
+        }
+    }
 
     /// Whether this build contains the primitive's intersection code.
     pub const fn is_compiled(self) -> bool {
@@ -25,6 +89,7 @@ impl Primitive {
             Primitive::Sphere => cfg!(feature = "sphere"),
             Primitive::Cylinder => cfg!(feature = "cylinder"),
             Primitive::Cone => cfg!(feature = "cone"),
+            Primitive::Torus(_) => cfg!(feature = "torus"),
         }
     }
 
@@ -35,6 +100,7 @@ impl Primitive {
             Primitive::Sphere => "sphere",
             Primitive::Cylinder => "cylinder",
             Primitive::Cone => "cone",
+            Primitive::Torus(_) => "torus",
         }
     }
 }

@@ -35,6 +35,10 @@ impl<N: Number> BoundingSphere<N> {
             Primitive::Cube => ([0.0; 3], [1.0; 3]),
             Primitive::Sphere => ([-1.0; 3], [1.0; 3]),
             Primitive::Cylinder | Primitive::Cone => ([-1.0, -1.0, 0.0], [1.0; 3]),
+            Primitive::Torus(tube) => {
+                let (reach, half) = (1.0 + tube.to_f64(), tube.to_f64());
+                ([-reach, -reach, -half], [reach, reach, half])
+            }
         };
         let corners: [[f64; 3]; 8] = core::array::from_fn(|i| {
             let pick = |axis: usize| if i >> axis & 1 == 0 { low[axis] } else { high[axis] };

@@ -69,12 +69,26 @@ const FACES: [[([f64; 3], f64); 6]; 4] = [
     [([0.0, 0.0, 1.0], 1.0), ([1.0, 0.0, -1.0], 0.0), ([-1.0, 0.0, -1.0], 0.0), ([0.0, 1.0, -1.0], 0.0), ([0.0, -1.0, -1.0], 0.0), ([0.0, 0.0, 1.0], 1.0)],
 ];
 
-fn type_index(primitive: Primitive) -> usize {
+/// The 8 vertices of the primitive's unit volume: the table's for the four unit primitives; for
+/// a torus of tube `R`, its flat box `[−1−R, 1+R]² × [−R, R]`, in the table's vertex order.
+pub fn unit_volume(primitive: Primitive) -> [[f64; 3]; 8] {
     match primitive {
-        Primitive::Cube => 0,
-        Primitive::Sphere => 1,
-        Primitive::Cylinder => 2,
-        Primitive::Cone => 3,
+        Primitive::Torus(tube) => {
+            let (reach, half) = (1.0 + tube.to_f64(), tube.to_f64());
+            VOLUMES[1].map(|[x, y, z]| [x * reach, y * reach, z * half])
+        }
+        other => VOLUMES[other.index()],
+    }
+}
+
+/// The faces of the primitive's unit volume as half-spaces `n·q ≤ c` (see [`FACES`]).
+fn unit_faces(primitive: Primitive) -> [([f64; 3], f64); 6] {
+    match primitive {
+        Primitive::Torus(tube) => {
+            let (reach, half) = (1.0 + tube.to_f64(), tube.to_f64());
+            FACES[1].map(|(n, _)| (n, if n[2] != 0.0 { half } else { reach }))
+        }
+        other => FACES[other.index()],
     }
 }
 
@@ -108,7 +122,7 @@ impl ObjectGeometry {
 
     /// `transformvolume`: the 8 world-space vertices of the object's bounding volume.
     pub fn volume(&self) -> [[f64; 3]; 8] {
-        VOLUMES[type_index(self.primitive)].map(|v| self.world_from_object.transform_point(v))
+        unit_volume(self.primitive).map(|v| self.world_from_object.transform_point(v))
     }
 
     /// World points whose convex hull, seen from the view, covers the object's silhouette
@@ -125,7 +139,8 @@ impl ObjectGeometry {
         let ring = |k: usize| RING[k];
         let world = |p: [f64; 3]| self.world_from_object.transform_point(p);
         match self.primitive {
-            Primitive::Cube => {
+            // The torus's flat box: its 8 corners, as for the cube.
+            Primitive::Cube | Primitive::Torus(_) => {
                 for (slot, vertex) in out.iter_mut().zip(self.volume()) {
                     *slot = vertex;
                 }
@@ -205,7 +220,7 @@ impl ObjectGeometry {
     pub fn distance_lower_bound(&self, eye: [f64; 3]) -> f64 {
         let a = &self.object_from_world.rows;
         let mut bound: f64 = 0.0;
-        for (n, c) in FACES[type_index(self.primitive)] {
+        for (n, c) in unit_faces(self.primitive) {
             // n·q with q = p·A + b is w·p + n·b, w = A n.
             let w = [0, 1, 2].map(|i| dot([a[i][0], a[i][1], a[i][2]], n));
             let nb = dot([a[3][0], a[3][1], a[3][2]], n);

@@ -489,6 +489,14 @@ mod tests {
                 Primitive::Sphere => x * x + y * y + z * z <= 1.0,
                 Primitive::Cylinder => x * x + y * y <= 1.0,
                 Primitive::Cone => x * x + y * y <= z * z,
+                Primitive::Torus(tube) => {
+                    let (r, reach) = (tube.to_f64(), 1.0 + tube.to_f64());
+                    let (x, y, z) = (x * reach, y * reach, z * r);
+                    if ((x * x + y * y).sqrt() - 1.0).powi(2) + z * z <= r * r {
+                        return [x, y, z];
+                    }
+                    false
+                }
             };
             if inside {
                 return [x, y, if primitive == Primitive::Sphere { z } else { z.abs() }];
@@ -515,7 +523,7 @@ mod tests {
         for case in 0..400 {
             let eye = [rng.range(-2.0, 2.0), rng.range(-2.0, 2.0), rng.range(0.0, 10.0)];
             let screen = screen(eye);
-            let primitive = Primitive::ALL[case % 4];
+            let primitive = Primitive::ALL[case % Primitive::ALL.len()];
             let mut m = Matrix4::IDENTITY;
             m.translate([-0.5, -0.5, -0.5]);
             m.scale([rng.range(0.5, 20.0), rng.range(0.5, 20.0), rng.range(0.5, 20.0)]);

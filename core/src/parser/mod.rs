@@ -46,7 +46,7 @@ mod tests;
 
 use crate::storage::List;
 use crate::model::{SceneError, SceneErrorKind, Token};
-use crate::model::{Antialias, Light, LightSource, Description, ObjectDescription, Optimizations, Primitive, Projection, SceneDescription, Viewport, Window, MAX_DEPTH, MAX_LIGHTS};
+use crate::model::{Antialias, Light, LightSource, Description, ObjectDescription, Optimizations, Primitive, Projection, Tube, SceneDescription, Viewport, Window, MAX_DEPTH, MAX_LIGHTS};
 use crate::model::Rgb4;
 
 /// The most arguments any fixed-arity statement takes (`group N R G B up`).
@@ -125,6 +125,7 @@ macro_rules! keywords {
             fn arity(self) -> (u8, Option<u8>, &'static str) {
                 match self {
                     $(Keyword::$variant => ($fewest, $most, $usage),)*
+                    Keyword::Primitive(Primitive::Torus(_)) => (1, Some(1), "torus R"),
                     Keyword::Primitive(primitive) => (0, Some(0), primitive.name()),
                 }
             }
@@ -384,6 +385,10 @@ fn statement<L: List<ObjectDescription>>(
         Keyword::Optimize => scene.optimizations = optimize(code, line)?,
         Keyword::Primitive(primitive) => {
             finish_object(scene)?;
+            let primitive = match primitive {
+                Primitive::Torus(_) => Primitive::Torus(tube(&s)?),
+                other => other,
+            };
             scene
                 .objects
                 .push(ObjectDescription::new(primitive, line))
@@ -404,6 +409,14 @@ fn statement<L: List<ObjectDescription>>(
         | Keyword::Ior => object_statement(&s, scene)?,
     }
     Ok(())
+}
+
+/// `torus R`: the tube's radius, a ring torus's (0 < R < 1), to the nearest 2⁻¹⁵ (`Tube`).
+fn tube(s: &Statement) -> Result<Tube, SceneError> {
+    let radius = s.real(0, "torus")?;
+    Tube::from_f64(radius).ok_or_else(|| {
+        s.error(SceneErrorKind::ValueOutOfRange { what: "torus", token: Token::new(s.arg(0)), range: "between 0 and 1, a ring torus's tube radius" })
+    })
 }
 
 /// `optimize ...`: the argument count is already checked to be at least 1.

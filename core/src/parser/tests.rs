@@ -162,6 +162,22 @@ fn empty_and_comment_only_inputs_give_the_defaults() {
 }
 
 #[test]
+fn a_torus_takes_its_tube_radius_to_the_nearest_step() {
+    let scene = ok("torus 0.25\ntorus 0.3\n  scale 2 2 2");
+    assert_eq!(scene.objects[0].primitive, Primitive::Torus(crate::model::Tube::QUARTER));
+    let Primitive::Torus(tube) = scene.objects[1].primitive else { panic!("{:?}", scene.objects[1].primitive) };
+    // 0.3 is 9830.4 steps of 2^-15: 9830.
+    assert_eq!(tube.steps(), 9830);
+    assert!((tube.to_f64() - 0.3).abs() <= 0.5 / 32768.0);
+    assert_eq!(tube.radius::<f32>(), (9830.0 / 32768.0) as f32);
+    // A ring torus only: 0 < R < 1.
+    for bad in ["torus 1", "torus 0", "torus -0.5", "torus 1e-9"] {
+        assert!(matches!(err(bad).kind, SceneErrorKind::ValueOutOfRange { what: "torus", .. }), "{bad}");
+    }
+    assert!(matches!(err("torus").kind, SceneErrorKind::WrongArgumentCount { .. }), "no radius");
+}
+
+#[test]
 fn a_new_object_has_the_getobject_defaults() {
     let scene = ok("cube\ncylinder\ncone\nsphere");
     let primitives: Vec<_> = scene.objects.iter().map(|o| o.primitive).collect();
@@ -608,7 +624,7 @@ fn exact_messages() {
         ("viewplane 1e400", "line 1: viewplane D: number `1e400` is out of range (too large for a 64-bit float)"),
         ("window 1 0 0 1", "line 1: window: X1 must be less than X2"),
         ("sphere\nscale 0 1 1", "line 2: singular transform: the object's transform cannot be inverted"),
-        ("ka 1", "line 1: `ka` changes the most recent object, but no object has started yet (start one with cube, sphere, cylinder or cone)"),
+        ("ka 1", "line 1: `ka` changes the most recent object, but no object has started yet (start one with cube, sphere, cylinder, cone or torus)"),
         ("parallel 0 0 0", "line 1: the direction is the zero vector (or too small or too large for its length to be computed)"),
     ] {
         assert_eq!(err(text).to_string(), message);

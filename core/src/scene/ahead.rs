@@ -13,7 +13,7 @@ use crate::number::Number;
 use crate::optimize::bounding_sphere::BoundingSphere;
 use crate::optimize::ObjectBounds;
 use crate::model::{SceneError, SceneErrorKind};
-use crate::model::{Optimizations, MAX_LIGHTS};
+use crate::model::{Optimizations, Primitive, MAX_LIGHTS};
 use crate::light::{PreparedLight, PreparedLightSource};
 use crate::config::Config;
 #[cfg(feature = "ray-tree")]
@@ -98,7 +98,9 @@ pub fn write_prepared_ahead<N: Number, C: Config<Number = N>>(scene: &Prepared<C
     writeln!(out, "pub static OBJECTS_AHEAD: [microtrace::model::Object<Number>; {count}] = [")?;
     for object in scene.objects.iter() {
         let columns = object.object_from_world.columns();
-        write!(out, "    microtrace::model::Object {{ primitive: microtrace::model::Primitive::{:?}, object_from_world: microtrace::geometry::AffineTransform::from_parts([", object.primitive)?;
+        write!(out, "    microtrace::model::Object {{ primitive: ")?;
+        primitive_path(object.primitive, out)?;
+        write!(out, ", object_from_world: microtrace::geometry::AffineTransform::from_parts([")?;
         for column in columns {
             numbers(out, &column)?;
             write!(out, ", ")?;
@@ -121,7 +123,9 @@ pub fn write_prepared_ahead<N: Number, C: Config<Number = N>>(scene: &Prepared<C
     writeln!(out, "];")?;
     writeln!(out, "pub static BOUNDS_AHEAD: [microtrace::optimize::ObjectBounds<Number>; {}] = [", bounds.len())?;
     for b in bounds {
-        write!(out, "    microtrace::optimize::ObjectBounds {{ primitive: microtrace::model::Primitive::{:?}, capsule: microtrace::optimize::capsule::Capsule {{ start: ", b.primitive)?;
+        write!(out, "    microtrace::optimize::ObjectBounds {{ primitive: ")?;
+        primitive_path(b.primitive, out)?;
+        write!(out, ", capsule: microtrace::optimize::capsule::Capsule {{ start: ")?;
         vector(out, b.capsule.start)?;
         write!(out, ", end: ")?;
         vector(out, b.capsule.end)?;
@@ -267,4 +271,12 @@ fn vector<N: Number>(out: &mut dyn Write, v: Vector3<N>) -> fmt::Result {
     write!(out, ", z: ")?;
     v.z.write_literal(out)?;
     write!(out, " }}")
+}
+
+/// The primitive as a Rust expression (a torus with its tube in steps).
+fn primitive_path(primitive: Primitive, out: &mut dyn Write) -> fmt::Result {
+    match primitive {
+        Primitive::Torus(tube) => write!(out, "microtrace::model::Primitive::Torus(microtrace::model::Tube::from_steps({}))", tube.steps()),
+        other => write!(out, "microtrace::model::Primitive::{other:?}"),
+    }
 }

@@ -12,9 +12,9 @@
 
 use crate::geometry::Matrix4;
 use crate::number::Number;
-use crate::optimize::bounding_volume::VOLUMES;
+use crate::optimize::bounding_volume::unit_volume;
 use crate::model::{SceneError, SceneErrorKind};
-use crate::model::{Description, Light, ObjectDescription, Primitive, Projection};
+use crate::model::{Description, Light, ObjectDescription, Projection};
 
 /// The axis-aligned box of every point a ray can start from: the eye or the window on the view
 /// plane for primary rays and, with shadows on, every object's bounding volume for shadow rays.
@@ -62,8 +62,7 @@ impl RayOrigins {
 }
 
 fn world_volume(object: &ObjectDescription) -> [[f64; 3]; 8] {
-    let index = Primitive::ALL.iter().position(|p| *p == object.primitive).unwrap_or(0);
-    VOLUMES[index].map(|vertex| object.world_from_object.transform_point(vertex))
+    unit_volume(object.primitive).map(|vertex| object.world_from_object.transform_point(vertex))
 }
 
 /// The largest magnitude among `values`; NaN if any is NaN (so that it fails the check).

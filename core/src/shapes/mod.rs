@@ -1,4 +1,5 @@
-//! The four unit primitives of §4.2.5 (fig 4.6), each with `intersect` (nearest hit and its
+//! The four unit primitives of §4.2.5 (fig 4.6) and the ring torus (§5.2.1; `torus.rs`, its
+//! quartic solved by bracketing in `polynomial.rs`), each with `intersect` (nearest hit and its
 //! normal, for primary rays) and the cheaper `occluded` (any hit, for shadow rays), in the
 //! object's own space (§4.4–4.6, RAYINTER.C).
 //!
@@ -24,13 +25,12 @@ mod cube;
 mod cylinder;
 #[cfg(feature = "torus")]
 mod polynomial;
+#[cfg(any(feature = "sphere", feature = "cylinder", feature = "cone"))]
 mod quadratic;
 #[cfg(feature = "sphere")]
 mod sphere;
-/// The ring torus's intersection (§5.2.1), ahead of its place among the primitives: the
-/// format's `torus R`, its bounding volume and CSG come with the issue "CSG and the torus".
 #[cfg(feature = "torus")]
-pub mod torus;
+mod torus;
 
 pub use bounds::{Interval, ScaledInterval};
 pub use hit::Hit;
@@ -65,6 +65,8 @@ impl Primitive {
             Primitive::Cylinder => cylinder::intersect(ray, interval),
             #[cfg(feature = "cone")]
             Primitive::Cone => cone::intersect(ray, interval),
+            #[cfg(feature = "torus")]
+            Primitive::Torus(tube) => torus::intersect(ray, interval, tube.radius()),
             // Scene preparation rejects primitives that are not compiled in.
             #[allow(unreachable_patterns)]
             _ => None,
@@ -82,6 +84,8 @@ impl Primitive {
             Primitive::Cylinder => cylinder::occluded(ray, interval),
             #[cfg(feature = "cone")]
             Primitive::Cone => cone::occluded(ray, interval),
+            #[cfg(feature = "torus")]
+            Primitive::Torus(tube) => torus::occluded(ray, interval, tube.radius()),
             #[allow(unreachable_patterns)]
             _ => false,
         }

@@ -71,12 +71,15 @@ fn monotone_root<N: Number, const K: usize, const D: usize>(c: &[N; K], dc: &[N;
 /// double root once.
 fn quadratic_roots<N: Number>(c: &[N; 3], lo: N, hi: N) -> ([N; 2], usize) {
     let mut found = [N::ZERO; 2];
-    let mut count = 0;
+    let mut count: usize = 0;
     let (a, b, k) = (c[2], c[1], c[0]);
+    // `get`, not indexing: no panic path in the firmware's image.
     let mut push = |root: N| {
-        if root >= lo && root <= hi && (count == 0 || found[count - 1] != root) {
-            found[count] = root;
-            count += 1;
+        if root >= lo && root <= hi && count.checked_sub(1).and_then(|last| found.get(last)).copied() != Some(root) {
+            if let Some(slot) = found.get_mut(count) {
+                *slot = root;
+                count += 1;
+            }
         }
     };
     if a == N::ZERO {
@@ -113,11 +116,13 @@ fn roots_between<N: Number, const K: usize, const D: usize, const R: usize>(
     hi: N,
 ) -> ([N; R], usize) {
     let mut found = [N::ZERO; R];
-    let mut count = 0;
+    let mut count: usize = 0;
     let mut push = |root: N| {
-        if count < R && (count == 0 || found[count - 1] != root) {
-            found[count] = root;
-            count += 1;
+        if count.checked_sub(1).and_then(|last| found.get(last)).copied() != Some(root) {
+            if let Some(slot) = found.get_mut(count) {
+                *slot = root;
+                count += 1;
+            }
         }
     };
     let mut start = lo;
@@ -148,8 +153,8 @@ pub fn quartic_roots<N: Number>(c: &[N; 5], lo: N, hi: N) -> ([N; 4], usize) {
     let cubic = [c[1], c[2].times_power_of_two(1), c[3] * N::from_i32(3), c[4].times_power_of_two(2)];
     let quadratic = [cubic[1], cubic[2].times_power_of_two(1), cubic[3] * N::from_i32(3)];
     let (bends, bend_count) = quadratic_roots(&quadratic, lo, hi);
-    let (extremes, extreme_count): ([N; 3], usize) = roots_between(&cubic, &quadratic, &bends[..bend_count], lo, hi);
-    roots_between(c, &cubic, &extremes[..extreme_count], lo, hi)
+    let (extremes, extreme_count): ([N; 3], usize) = roots_between(&cubic, &quadratic, bends.get(..bend_count).unwrap_or(&[]), lo, hi);
+    roots_between(c, &cubic, extremes.get(..extreme_count).unwrap_or(&[]), lo, hi)
 }
 
 #[cfg(test)]

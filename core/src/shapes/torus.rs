@@ -38,8 +38,8 @@ pub fn crossings<N: Number>(ray: &Ray<N>, tube: N) -> ([N; 4], usize) {
     let mut found = [N::ZERO; 4];
     let mut kept = 0;
     for u in roots.into_iter().take(count) {
-        if let Some(along) = u.checked_div(length) {
-            found[kept] = enter + along;
+        if let (Some(along), Some(slot)) = (u.checked_div(length), found.get_mut(kept)) {
+            *slot = enter + along;
             kept += 1;
         }
     }
