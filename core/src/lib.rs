@@ -24,6 +24,7 @@
 
 pub mod camera;
 pub mod config;
+pub mod csg;
 pub mod formats;
 pub mod geometry;
 pub mod light;
