@@ -13,15 +13,18 @@
 //! before the result is classified, so no span of zero length is made and the answer does not
 //! depend on the operands' order (the rule, with its test, for the flush faces of `A − B`).
 
+use crate::geometry::Vector3;
 use crate::number::Number;
 
-/// Where a span starts or ends: the ray parameter, the tree's leaf whose surface it is, and
-/// whether that surface's normal is to be flipped (the inside of a subtracted operand).
+/// Where a span starts or ends: the ray parameter, the tree's leaf whose surface it is, whether
+/// that surface's normal is to be flipped (the inside of a subtracted operand), and the leaf's
+/// outward normal there in its object space (not normalised, not yet flipped).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Boundary<N> {
     pub t: N,
     pub leaf: u16,
     pub flipped: bool,
+    pub normal: Vector3<N>,
 }
 
 /// The ray inside the solid from `enter` to `exit` (`enter.t ≤ exit.t`).
@@ -188,7 +191,7 @@ mod tests {
     use super::*;
 
     fn boundary(t: f64, leaf: u16) -> Boundary<f64> {
-        Boundary { t, leaf, flipped: false }
+        Boundary { t, leaf, flipped: false, normal: Vector3::zero() }
     }
 
     fn spans(leaf: u16, list: &[(f64, f64)]) -> Spans<f64, 4> {

@@ -83,3 +83,8 @@ pub fn intersect<N: Number>(ray: &Ray<N>, interval: ScaledInterval<N>) -> Option
 pub fn occluded<N: Number>(ray: &Ray<N>, interval: ScaledInterval<N>) -> bool {
     hit::any(surfaces(ray), interval)
 }
+
+/// Every crossing, at any `t`, with the outward normal (for CSG's spans).
+pub fn crossings<N: Number>(ray: &Ray<N>) -> [Option<(N, Vector3<N>)>; 3] {
+    surfaces(ray)
+}

@@ -53,3 +53,11 @@ pub fn occluded<N: Number>(ray: &Ray<N>, interval: ScaledInterval<N>) -> bool {
         None => false,
     }
 }
+
+/// Entry and exit, at any `t`, with the outward normals (for CSG's spans).
+pub fn crossings<N: Number>(ray: &Ray<N>) -> [Option<Crossing<N>>; 2] {
+    match span(ray) {
+        Some((enter, exit)) => [Some(enter), Some(exit)],
+        None => [None, None],
+    }
+}

@@ -92,6 +92,64 @@ impl Primitive {
     }
 }
 
+/// Every crossing of a ray with a primitive's surface, at any `t` (behind the origin too), in
+/// order along the ray, with the outward normal there (not normalised): what CSG's spans are
+/// made of (`csg::leaf_spans`). At most four (a torus); a convex primitive has two, or one where
+/// the ray touches it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Crossings<N> {
+    pub list: [(N, crate::geometry::Vector3<N>); 4],
+    pub len: usize,
+}
+
+impl<N: Number> Crossings<N> {
+    pub fn iter(&self) -> impl Iterator<Item = &(N, crate::geometry::Vector3<N>)> + '_ {
+        self.list.iter().take(self.len)
+    }
+
+    /// Sorted by `t` from any order; `None` entries are skipped.
+    fn sorted<const K: usize>(found: [Option<(N, crate::geometry::Vector3<N>)>; K], unscale: impl Fn(N) -> N) -> Self {
+        let mut crossings = Self { list: [(N::ZERO, crate::geometry::Vector3::zero()); 4], len: 0 };
+        for (t, normal) in found.into_iter().flatten() {
+            let t = unscale(t);
+            let Some(slot) = crossings.list.get_mut(crossings.len) else { break };
+            *slot = (t, normal);
+            crossings.len += 1;
+            // Insertion: move it back past later crossings.
+            let mut index = crossings.len - 1;
+            while index > 0 && crossings.list.get(index - 1).is_some_and(|before| before.0 > t) {
+                crossings.list.swap(index - 1, index);
+                index -= 1;
+            }
+        }
+        crossings
+    }
+}
+
+impl Primitive {
+    /// Every crossing of the ray with the primitive's surface (see [`Crossings`]).
+    #[allow(unused_variables)]
+    pub fn crossings<N: Number>(self, ray: &Ray<N>) -> Crossings<N> {
+        let (scaled, interval) = scaled_to_unit(ray, Interval::unbounded());
+        let unscale = |t: N| interval.unscale(t);
+        let ray = &scaled;
+        match self {
+            #[cfg(feature = "cube")]
+            Primitive::Cube => Crossings::sorted(cube::crossings(ray), unscale),
+            #[cfg(feature = "sphere")]
+            Primitive::Sphere => Crossings::sorted(sphere::crossings(ray), unscale),
+            #[cfg(feature = "cylinder")]
+            Primitive::Cylinder => Crossings::sorted(cylinder::crossings(ray), unscale),
+            #[cfg(feature = "cone")]
+            Primitive::Cone => Crossings::sorted(cone::crossings(ray), unscale),
+            #[cfg(feature = "torus")]
+            Primitive::Torus(tube) => Crossings::sorted(torus::all_crossings(ray, tube.radius()), unscale),
+            #[allow(unreachable_patterns)]
+            _ => Crossings::sorted::<0>([], unscale),
+        }
+    }
+}
+
 /// The ray with its direction scaled by a power of two so that its largest component lies in
 /// [1, 2), and the interval that converts parameters back. Object-space directions have
 /// components of about one over the object's size; in fixed point their squares (the

@@ -2,7 +2,7 @@
 
 use super::hit::Hit;
 use super::{quadratic, ScaledInterval};
-use crate::geometry::Ray;
+use crate::geometry::{Ray, Vector3};
 use crate::number::Number;
 
 // Inline into `intersect` and `occluded`: its two optional roots returned through memory cost
@@ -34,3 +34,11 @@ pub fn occluded<N: Number>(ray: &Ray<N>, interval: ScaledInterval<N>) -> bool {
     }
 }
 
+
+/// Both crossings, at any `t`, with the outward normal (for CSG's spans).
+pub fn crossings<N: Number>(ray: &Ray<N>) -> [Option<(N, Vector3<N>)>; 2] {
+    match candidate_roots(ray) {
+        Some(roots) => roots.map(|root| root.map(|t| (t, ray.at(t)))),
+        None => [None, None],
+    }
+}

@@ -25,8 +25,24 @@ use crate::number::Number;
 /// The ray parameters where the ray crosses the torus's surface, ascending, and how many there
 /// are (0 to 4). Only crossings at `t ≥ 0` and inside the box are looked for.
 pub fn crossings<N: Number>(ray: &Ray<N>, tube: N) -> ([N; 4], usize) {
+    crossings_from(ray, tube, N::ZERO)
+}
+
+/// Every crossing at any `t` (behind the origin too), ascending, with the outward normal (for
+/// CSG's spans).
+pub fn all_crossings<N: Number>(ray: &Ray<N>, tube: N) -> [Option<(N, Vector3<N>)>; 4] {
+    let (roots, count) = crossings_from(ray, tube, -N::MAX);
+    let mut found = [None; 4];
+    for (slot, t) in found.iter_mut().zip(roots.into_iter().take(count)) {
+        *slot = Some((t, normal(ray.at(t), tube)));
+    }
+    found
+}
+
+/// The crossings at `t ≥ from`, ascending.
+fn crossings_from<N: Number>(ray: &Ray<N>, tube: N, from: N) -> ([N; 4], usize) {
     let none = ([N::ZERO; 4], 0);
-    let Some((enter, leave)) = box_span(ray, tube) else { return none };
+    let Some((enter, leave)) = box_span(ray, tube, from) else { return none };
     let d = ray.direction.to_array();
     let length = N::length3(d);
     let Some(unit) = unit_direction(d, length) else { return none };
@@ -65,14 +81,14 @@ pub fn normal<N: Number>(p: Vector3<N>, tube: N) -> Vector3<N> {
     Vector3::new(p.x * (sum - two), p.y * (sum - two), p.z * sum)
 }
 
-/// The ray's parameters inside the torus's box, from `max(entry, 0)` to the exit; `None` when
-/// it misses the box or leaves it behind its origin. A direction component that is zero never
+/// The ray's parameters inside the torus's box, from `max(entry, from)` to the exit; `None` when
+/// it misses the box or leaves it before `from`. A direction component that is zero never
 /// divides: the ray is then inside that slab or misses it.
-fn box_span<N: Number>(ray: &Ray<N>, tube: N) -> Option<(N, N)> {
+fn box_span<N: Number>(ray: &Ray<N>, tube: N, from: N) -> Option<(N, N)> {
     let reach = N::ONE + tube;
     let half_widths = [reach, reach, tube];
     let (origin, direction) = (ray.origin.to_array(), ray.direction.to_array());
-    let mut enter = N::ZERO;
+    let mut enter = from;
     let mut leave = N::MAX;
     for axis in 0..3 {
         let (p, d, half) = (origin[axis], direction[axis], half_widths[axis]);
