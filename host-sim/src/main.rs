@@ -27,6 +27,8 @@ enum Command {
     Bench(commands::bench::BenchArgs),
     /// Open the simulator window and watch a scene render.
     View(commands::view::ViewArgs),
+    /// Each object's volume by ray casting in a parallel view (thesis §3.3), with its error.
+    Volume(commands::volume::VolumeArgs),
 }
 
 fn main() {
@@ -36,6 +38,7 @@ fn main() {
         Command::Render(args) => commands::render::run(args),
         Command::Decode(args) => commands::decode::run(args),
         Command::Bench(args) => commands::bench::run(args),
+        Command::Volume(args) => commands::volume::run(args),
         // The arguments were checked above; `microtrace-view` takes what followed `view`.
         Command::View(_) => microtrace_sim::window_binary::run_view(env!("MICROTRACE_BUILD_ID"), std::env::args_os().skip(2)),
     };

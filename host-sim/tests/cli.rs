@@ -228,3 +228,28 @@ fn render_display_writes_the_displays_picture() {
     let refused = microtrace(&["render", "scenes/snooker.mts", "--display", "ssd1306", "--out", directory.join("x.png").to_str().unwrap(), "--stats"]);
     assert!(!refused.status.success());
 }
+
+/// `microtrace volume`: each object's volume with its error estimate, the torus's among them
+/// (2π²·R·r² scaled: scenes/torus.mts's `torus 0.3` scaled by 40 is 113,699); a scene without
+/// objects, or a missing file, is an error naming the file.
+#[test]
+fn volume_gives_each_objects_volume_and_its_error() {
+    let output = microtrace(&["volume", "scenes/torus.mts", "--size", "128"]);
+    assert!(output.status.success(), "{}", text(&output.stderr));
+    let stdout = text(&output.stdout);
+    let line = stdout.lines().find(|line| line.starts_with("object 2 (torus, line 23): volume ")).unwrap_or_else(|| panic!("{stdout}"));
+    let numbers: Vec<f64> = line.split(['(', ')', ' ', '±']).filter_map(|word| word.parse().ok()).collect();
+    let (volume, error) = (numbers[2], numbers[3]);
+    let exact = 2.0 * std::f64::consts::PI.powi(2) * 0.3 * 0.3 * 40f64.powi(3);
+    assert!((volume - exact).abs() <= error && error < exact * 0.05, "{line}: exact {exact}");
+    assert_eq!(stdout.lines().count(), 4, "{stdout}");
+
+    let directory = scratch("volume");
+    let empty = directory.join("empty.mts");
+    std::fs::write(&empty, "viewport 0 9 0 9\n").unwrap();
+    let output = microtrace(&["volume", empty.to_str().unwrap()]);
+    assert!(!output.status.success());
+    assert!(text(&output.stderr).contains("empty.mts: the scene has no objects"), "{}", text(&output.stderr));
+    let output = microtrace(&["volume", "no-such-scene.mts"]);
+    assert!(!output.status.success() && text(&output.stderr).contains("no-such-scene.mts"), "{}", text(&output.stderr));
+}

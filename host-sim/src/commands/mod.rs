@@ -4,3 +4,4 @@ pub mod bench;
 pub mod decode;
 pub mod render;
 pub mod view;
+pub mod volume;
