@@ -3,6 +3,7 @@
 
 pub mod allocation;
 pub mod commands;
+pub mod edges;
 pub mod files;
 pub mod heap;
 pub mod image_difference;

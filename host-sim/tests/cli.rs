@@ -253,3 +253,33 @@ fn volume_gives_each_objects_volume_and_its_error() {
     let output = microtrace(&["volume", "no-such-scene.mts"]);
     assert!(!output.status.success() && text(&output.stderr).contains("no-such-scene.mts"), "{}", text(&output.stderr));
 }
+
+/// `render --edges`: a black line on white where a pixel's first surface differs from its left
+/// or upper neighbour's: for a square in a parallel view, its left and top rows of pixels and
+/// the background pixels just right of and below it.
+#[test]
+fn edges_draw_where_the_first_surface_changes() {
+    let directory = scratch("edges");
+    let scene = directory.join("square.mts");
+    // 16 x 16 pixels sampling x, y = −8 + 16/15·i: the cube [−3, 3]² covers columns and rows 5..=10.
+    std::fs::write(&scene, "viewport 0 15 0 15\nwindow -8 8 -8 8\nviewplane 10\nparallel 0 0 -1\ncube\n  scale 6 6 6\n  translate -3 -3 -3\n").unwrap();
+    let out = directory.join("edges.png");
+    let output = microtrace(&["render", scene.to_str().unwrap(), "--edges", "--out", out.to_str().unwrap()]);
+    assert!(output.status.success(), "{}", text(&output.stderr));
+    let (width, height, pixels) = microtrace_sim::files::read_png_rgb(&out).unwrap();
+    assert_eq!((width, height), (16, 16));
+    let black: Vec<(usize, usize)> = (0..256).filter(|i| pixels[*i] == [0, 0, 0]).map(|i| (i % 16, i / 16)).collect();
+    assert!(pixels.iter().all(|p| *p == [0, 0, 0] || *p == [255, 255, 255]), "only black and white");
+    let mut expected: Vec<(usize, usize)> = Vec::new();
+    for row in 0..16 {
+        for column in 0..16 {
+            let inside = |c: usize, r: usize| (5..=10).contains(&c) && (5..=10).contains(&r);
+            let here = inside(column, row);
+            if (column > 0 && inside(column - 1, row) != here) || (row > 0 && inside(column, row - 1) != here) {
+                expected.push((column, row));
+            }
+        }
+    }
+    assert_eq!(black, expected);
+    assert_eq!(black.len(), 23);
+}

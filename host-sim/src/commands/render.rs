@@ -71,6 +71,10 @@ pub struct RenderArgs {
     /// real-board examples do (the window's display preview; docs/simulator.md).
     #[arg(long, value_enum, value_name = "KIND", requires = "out", conflicts_with_all = ["pga", "rgb", "lut", "stats", "stats_json", "progressive", "size"])]
     pub display: Option<DisplayKind>,
+    /// Write, as --out, the edge image instead of the picture (Roth, thesis §3.3): a black line
+    /// where a pixel's first surface differs from its left or upper neighbour's, on white.
+    #[arg(long, requires = "out", conflicts_with_all = ["pga", "rgb", "lut", "stats", "stats_json", "progressive", "display"])]
+    pub edges: bool,
 }
 
 /// Parses a thread count of at least 1.
@@ -100,6 +104,12 @@ pub fn run(args: RenderArgs) -> anyhow::Result<()> {
         let shown = preview::render(&scene, args.number, kind).map_err(|error| scene_file::in_file(&args.scene, error))?;
         let (width, height) = kind.size();
         let rgb: Vec<[u8; 3]> = shown.pixels.iter().map(|colour| [colour.r(), colour.g(), colour.b()]).collect();
+        return files::write_png_rgb(path, width, height, &rgb).with_context(|| format!("cannot write {}", path.display()));
+    }
+    if let (true, Some(path)) = (args.edges, &args.out) {
+        let surfaces = crate::edges::first_surfaces(&scene, args.number).map_err(|error| scene_file::in_file(&args.scene, error.into()))?;
+        let (width, height) = (scene.viewport.width(), scene.viewport.height());
+        let rgb: Vec<[u8; 3]> = crate::edges::edges(&surfaces, usize::from(width)).into_iter().map(|edge| if edge { [0; 3] } else { [255; 3] }).collect();
         return files::write_png_rgb(path, width, height, &rgb).with_context(|| format!("cannot write {}", path.display()));
     }
     let label = format!("rendering {}", args.scene.display());
