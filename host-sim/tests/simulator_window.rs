@@ -128,6 +128,32 @@ fn window_shows_the_same_image_as_render() {
     check_scene(&binary, &display, "snooker", &["--number", "f32", "--opt", "none", "--dither", "on"]);
 }
 
+/// `E` shows the edge image in place of the picture: the window's image area is `render
+/// --edges`'s, pixel for pixel (the torus scene: its rings' outlines and the hole's).
+#[test]
+fn e_shows_the_edge_image_of_render_edges() {
+    let Some((display, _xvfb)) = display_or_skip() else { return };
+    let binary = microtrace_binary();
+    let ((window_width, _, window), _) = screenshot_and_stderr(&binary, &display, "torus", &["--keys", "e"]);
+    let dir = std::env::temp_dir().join(format!("microtrace-view-{}-edges", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let reference = dir.join("edges.png");
+    let status = Command::new(&binary)
+        .arg("render")
+        .arg(workspace().join("scenes/torus.mts"))
+        .args(["--size", "132x120", "--edges", "--out"])
+        .arg(&reference)
+        .status()
+        .expect("run microtrace render");
+    assert!(status.success());
+    let (width, height, expected) = read_png(&reference);
+    let differing = (0..height).flat_map(|y| (0..width).map(move |x| (x, y))).filter(|&(x, y)| window[(y * window_width + x) as usize] != expected[(y * width + x) as usize]).count();
+    assert_eq!(differing, 0, "{differing} pixels of the window's edge image differ from `render --edges`");
+    let black = expected.iter().filter(|p| **p == [0, 0, 0]).count();
+    assert!(black > 100 && black < (width * height / 4) as usize, "{black} edge pixels");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 /// `view --progressive` (coarse to fine, straight into the window) ends with the same window
 /// image as the plain `view`, and reports each pass's rays in the panel's statistics on stderr.
 #[test]

@@ -101,6 +101,8 @@ struct Settings {
     mode: Mode,
     overlay: bool,
     fill: bool,
+    /// Show the edge image (`E`) instead of the picture.
+    edges: bool,
     progressive: bool,
     display: DisplayKind,
     /// The threshold `A` turns antialiasing on with: the scene's, else [`rays::DEFAULT_THRESHOLD`].
@@ -163,6 +165,7 @@ pub fn run(args: ViewArgs) -> anyhow::Result<()> {
         number: args.number,
         mode: args.mode,
         overlay: args.overlay,
+        edges: false,
         fill: args.fill,
         progressive: args.progressive,
         display: args.display,
@@ -260,6 +263,10 @@ fn apply(action: Action, scene: &mut HostScene, settings: &mut Settings, path: &
         }
         Action::ToggleFill => {
             settings.fill = !settings.fill;
+            return Change::Window;
+        }
+        Action::ToggleEdges => {
+            settings.edges = !settings.edges;
             return Change::Window;
         }
         Action::CycleDisplay => {
@@ -424,7 +431,13 @@ fn draw_finished(
     let _ = display.clear(EgRgb888::BLACK);
     let rendered = &finished.rendered;
     let width = usize::from(rendered.width());
-    let pixels = rendered.to_rgb().into_iter().enumerate().map(|(i, [r, g, b])| Pixel(Point::new((i % width) as i32, (i / width) as i32), EgRgb888::new(r, g, b)));
+    // The edge image (E) in place of the picture: black lines where the first surface changes.
+    let edges = settings.edges.then(|| crate::edges::first_surfaces(scene, settings.number).ok()).flatten();
+    let colours: Vec<[u8; 3]> = match &edges {
+        Some(surfaces) => crate::edges::edges(surfaces, width).into_iter().map(|edge| if edge { [0; 3] } else { [255; 3] }).collect(),
+        None => rendered.to_rgb(),
+    };
+    let pixels = colours.into_iter().enumerate().map(|(i, [r, g, b])| Pixel(Point::new((i % width) as i32, (i / width) as i32), EgRgb888::new(r, g, b)));
     let _ = display.draw_iter(pixels);
     if settings.fill {
         finished.fill.draw_tint(display);
@@ -452,7 +465,7 @@ fn draw_finished(
         format!("opt {}", optimization_names(scene.optimizations)),
         format!("shadows {}  dither {}", on(scene.shadows), on(scene.dither)),
         tree,
-        format!("overlay {}  fill {} ({} px)", on(settings.overlay), on(settings.fill), finished.fill.count()),
+        format!("overlay {}  fill {} ({} px)  edges {}", on(settings.overlay), on(settings.fill), finished.fill.count(), on(settings.edges)),
         format!("preprocess {:.1} ms", rendered.preprocess.as_secs_f64() * 1e3),
         format!("trace      {:.1} ms", rendered.trace.as_secs_f64() * 1e3),
         format!("pixels {}  traced {}", s.pixels, s.rays_traced),
