@@ -106,55 +106,92 @@ fn quadratic_roots<N: Number>(c: &[N; 3], lo: N, hi: N) -> ([N; 2], usize) {
     (found, count)
 }
 
-/// The roots in `[lo, hi]` of the polynomial `c` (degree `K − 1`, leading coefficient not zero),
-/// ascending, given the ascending critical points in `[lo, hi]` (the derivative's roots there).
-fn roots_between<N: Number, const K: usize, const D: usize, const R: usize>(
-    c: &[N; K],
-    dc: &[N; D],
-    critical: &[N],
-    lo: N,
-    hi: N,
-) -> ([N; R], usize) {
-    let mut found = [N::ZERO; R];
-    let mut count: usize = 0;
-    let mut push = |root: N| {
-        if count.checked_sub(1).and_then(|last| found.get(last)).copied() != Some(root) {
-            if let Some(slot) = found.get_mut(count) {
-                *slot = root;
-                count += 1;
-            }
+/// The real roots in `[lo, hi]` of the quartic `c[0] + c[1] u + … + c[4] u⁴` (`c[4] > 0`),
+/// ascending, each once, the first `limit` of them (a nearest hit needs one or two, CSG's spans
+/// all four); the count is how many are found. The quartic's critical points (its derivative's
+/// roots) are found in order as the walk needs them, so a walk that stops early finds no more
+/// of them than it used.
+pub fn quartic_roots<N: Number>(c: &[N; 5], lo: N, hi: N, limit: usize) -> ([N; 4], usize) {
+    let cubic = [c[1], c[2].times_power_of_two(1), c[3] * N::from_i32(3), c[4].times_power_of_two(2)];
+    let quadratic = [cubic[1], cubic[2].times_power_of_two(1), cubic[3] * N::from_i32(3)];
+    let (bends, bend_count) = quadratic_roots(&quadratic, lo, hi);
+    let mut walk = Walk::new(c, &cubic, lo, limit);
+    // The cubic's roots, piece by piece between the quadratic's: each ends a monotone stretch
+    // of the quartic.
+    let (mut start, mut f_start) = (lo, value(&cubic, lo));
+    for end in bends.iter().take(bend_count).copied().chain(core::iter::once(hi)) {
+        if walk.done() {
+            break;
         }
-    };
-    let mut start = lo;
-    let mut f_start = value(c, lo);
-    if f_start == N::ZERO {
-        push(lo);
-    }
-    for end in critical.iter().copied().chain(core::iter::once(hi)) {
         if end <= start {
             continue;
         }
-        let f_end = value(c, end);
+        let f_end = value(&cubic, end);
         match (sign(f_start), sign(f_end)) {
-            (_, 0) => push(end),
+            (_, 0) => walk.to(end),
             (0, _) => {}
-            (a, b) if a != b => push(monotone_root(c, dc, start, end, f_start)),
+            (a, b) if a != b => walk.to(monotone_root(&cubic, &quadratic, start, end, f_start)),
             _ => {}
         }
         start = end;
         f_start = f_end;
     }
-    (found, count)
+    walk.to(hi);
+    (walk.found, walk.count)
 }
 
-/// The real roots in `[lo, hi]` of the quartic `c[0] + c[1] u + … + c[4] u⁴` (`c[4] > 0`),
-/// ascending, each once; the count is how many of the four are found.
-pub fn quartic_roots<N: Number>(c: &[N; 5], lo: N, hi: N) -> ([N; 4], usize) {
-    let cubic = [c[1], c[2].times_power_of_two(1), c[3] * N::from_i32(3), c[4].times_power_of_two(2)];
-    let quadratic = [cubic[1], cubic[2].times_power_of_two(1), cubic[3] * N::from_i32(3)];
-    let (bends, bend_count) = quadratic_roots(&quadratic, lo, hi);
-    let (extremes, extreme_count): ([N; 3], usize) = roots_between(&cubic, &quadratic, bends.get(..bend_count).unwrap_or(&[]), lo, hi);
-    roots_between(c, &cubic, extremes.get(..extreme_count).unwrap_or(&[]), lo, hi)
+/// The walk along the quartic from one critical point to the next, collecting its roots.
+struct Walk<'a, N> {
+    c: &'a [N; 5],
+    dc: &'a [N; 4],
+    start: N,
+    f_start: N,
+    limit: usize,
+    found: [N; 4],
+    count: usize,
+}
+
+impl<'a, N: Number> Walk<'a, N> {
+    fn new(c: &'a [N; 5], dc: &'a [N; 4], lo: N, limit: usize) -> Self {
+        let mut walk = Self { c, dc, start: lo, f_start: value(c, lo), limit, found: [N::ZERO; 4], count: 0 };
+        if walk.f_start == N::ZERO {
+            walk.push(lo);
+        }
+        walk
+    }
+
+    fn done(&self) -> bool {
+        self.count >= self.limit
+    }
+
+    // `get`, not indexing: no panic path in the firmware's image.
+    fn push(&mut self, root: N) {
+        if self.count.checked_sub(1).and_then(|last| self.found.get(last)).copied() != Some(root) {
+            if let Some(slot) = self.found.get_mut(self.count) {
+                *slot = root;
+                self.count += 1;
+            }
+        }
+    }
+
+    /// The stretch from the last critical point to `end`, where the quartic is monotone.
+    fn to(&mut self, end: N) {
+        if self.done() || end <= self.start {
+            return;
+        }
+        let f_end = value(self.c, end);
+        match (sign(self.f_start), sign(f_end)) {
+            (_, 0) => self.push(end),
+            (0, _) => {}
+            (a, b) if a != b => {
+                let root = monotone_root(self.c, self.dc, self.start, end, self.f_start);
+                self.push(root);
+            }
+            _ => {}
+        }
+        self.start = end;
+        self.f_start = f_end;
+    }
 }
 
 #[cfg(test)]
@@ -178,7 +215,7 @@ mod tests {
     }
 
     fn roots(c: [f64; 5], lo: f64, hi: f64) -> Vec<f64> {
-        let (found, count) = quartic_roots(&c, lo, hi);
+        let (found, count) = quartic_roots(&c, lo, hi, 4);
         found[..count].to_vec()
     }
 

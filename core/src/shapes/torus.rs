@@ -13,8 +13,10 @@
 //! - its roots are bracketed and polished (`polynomial::quartic_roots`: Newton inside brackets
 //!   that the derivative's roots make, bisection where Newton would leave them).
 //!
-//! `crossings` gives every surface crossing in order (the spans CSG needs: a torus has at most
-//! two); `intersect` and `occluded` the nearest and any inside the interval, as for the quadrics.
+//! `all_crossings` gives every surface crossing in order (the spans CSG needs: a torus has at
+//! most two); `intersect` and `occluded` the nearest and any inside the interval, as for the
+//! quadrics, from the first two crossings in front (the rest are not looked for). Besides the
+//! box, the ray is clipped to the sphere of radius 1 + tube that holds the torus.
 
 use super::hit::Hit;
 use super::polynomial;
@@ -23,15 +25,23 @@ use crate::geometry::{Ray, Vector3};
 use crate::number::Number;
 
 /// The ray parameters where the ray crosses the torus's surface, ascending, and how many there
-/// are (0 to 4). Only crossings at `t ≥ 0` and inside the box are looked for.
-pub fn crossings<N: Number>(ray: &Ray<N>, tube: N) -> ([N; 4], usize) {
-    crossings_from(ray, tube, N::ZERO)
+/// are (0 to 4). Only crossings at `t ≥ 0` and inside the box are looked for. (The tests'
+/// view; the tracer asks for the nearest two, CSG for all at any `t`.)
+#[cfg(test)]
+fn crossings<N: Number>(ray: &Ray<N>, tube: N) -> ([N; 4], usize) {
+    crossings_from(ray, tube, N::ZERO, 4)
+}
+
+/// The first two crossings at `t ≥ 0`: the nearest hit is the first, or the second when the
+/// first is at `t = 0` exactly (a ray from the surface), which the interval leaves out.
+fn nearest_crossings<N: Number>(ray: &Ray<N>, tube: N) -> ([N; 4], usize) {
+    crossings_from(ray, tube, N::ZERO, 2)
 }
 
 /// Every crossing at any `t` (behind the origin too), ascending, with the outward normal (for
 /// CSG's spans).
 pub fn all_crossings<N: Number>(ray: &Ray<N>, tube: N) -> [Option<(N, Vector3<N>)>; 4] {
-    let (roots, count) = crossings_from(ray, tube, -N::MAX);
+    let (roots, count) = crossings_from(ray, tube, -N::MAX, 4);
     let mut found = [None; 4];
     for (slot, t) in found.iter_mut().zip(roots.into_iter().take(count)) {
         *slot = Some((t, normal(ray.at(t), tube)));
@@ -39,8 +49,8 @@ pub fn all_crossings<N: Number>(ray: &Ray<N>, tube: N) -> [Option<(N, Vector3<N>
     found
 }
 
-/// The crossings at `t ≥ from`, ascending.
-fn crossings_from<N: Number>(ray: &Ray<N>, tube: N, from: N) -> ([N; 4], usize) {
+/// The first `limit` crossings at `t ≥ from`, ascending.
+fn crossings_from<N: Number>(ray: &Ray<N>, tube: N, from: N, limit: usize) -> ([N; 4], usize) {
     let none = ([N::ZERO; 4], 0);
     let Some((enter, leave)) = box_span(ray, tube, from) else { return none };
     let d = ray.direction.to_array();
@@ -49,8 +59,16 @@ fn crossings_from<N: Number>(ray: &Ray<N>, tube: N, from: N) -> ([N; 4], usize) 
     // About the entry point, in distance along the unit direction: u ∈ [0, (leave − enter)·|d|].
     let start = ray.at(enter).to_array();
     let span = (leave - enter) * length;
+    // Within the sphere of radius 1 + tube about the centre too (the torus's farthest points
+    // are on it; widened by 2⁻¹² to stay outside rounding): most rays that cross the box's
+    // corners miss it, and those that do not have a shorter stretch to bracket.
+    let Some((near, far)) = sphere_span(start, unit, N::ONE + tube) else { return none };
+    let (low, high) = (near.max(N::ZERO), far.min(span));
+    if low > high {
+        return none;
+    }
     let coefficients = quartic(start, unit, tube);
-    let (roots, count) = polynomial::quartic_roots(&coefficients, N::ZERO, span);
+    let (roots, count) = polynomial::quartic_roots(&coefficients, low, high, limit);
     let mut found = [N::ZERO; 4];
     let mut kept = 0;
     for u in roots.into_iter().take(count) {
@@ -63,13 +81,13 @@ fn crossings_from<N: Number>(ray: &Ray<N>, tube: N, from: N) -> ([N; 4], usize) 
 }
 
 pub fn intersect<N: Number>(ray: &Ray<N>, interval: ScaledInterval<N>, tube: N) -> Option<Hit<N>> {
-    let (roots, count) = crossings(ray, tube);
+    let (roots, count) = nearest_crossings(ray, tube);
     let t = roots.into_iter().take(count).find(|t| interval.contains(*t))?;
     Some(Hit { t, normal: normal(ray.at(t), tube) })
 }
 
 pub fn occluded<N: Number>(ray: &Ray<N>, interval: ScaledInterval<N>, tube: N) -> bool {
-    let (roots, count) = crossings(ray, tube);
+    let (roots, count) = nearest_crossings(ray, tube);
     roots.into_iter().take(count).any(|t| interval.contains(t))
 }
 
@@ -104,6 +122,20 @@ fn box_span<N: Number>(ray: &Ray<N>, tube: N, from: N) -> Option<(N, N)> {
         leave = leave.min(far);
     }
     (enter <= leave).then_some((enter, leave))
+}
+
+/// Where `start + u·unit` (`|unit| = 1`) is within `radius` (widened by 2⁻¹²) of the origin:
+/// `u² + 2bu + |start|² − r² = 0`, `b = start·unit`; `None` when it never is.
+fn sphere_span<N: Number>(start: [N; 3], unit: [N; 3], radius: N) -> Option<(N, N)> {
+    let widened = radius + radius.times_power_of_two(-12);
+    let b = N::dot3(start, unit);
+    let c = N::dot3(start, start) - widened * widened;
+    let discriminant = b * b - c;
+    if discriminant < N::ZERO {
+        return None;
+    }
+    let root = discriminant.sqrt();
+    Some((-b - root, -b + root))
 }
 
 /// `d / |d|`, or `None` for a zero direction.
