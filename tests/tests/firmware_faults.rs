@@ -174,9 +174,14 @@ fn many_spheres(count: usize) -> PathBuf {
         let (x, z) = ((index % 25) as f64 * 30.0 - 360.0, (index / 25) as f64 * 30.0);
         text += &format!("sphere\n  scale 12 12 12\n  translate {x} 12 {z}\n  colour 1\n");
     }
+    // Tests running side by side write the same scene: each writes its own file and renames it
+    // into place, so no build ever reads a half-written scene (a truncated file parses as fewer
+    // spheres, which once gave a smaller stack than expected).
     let path = work_dir("scenes").join(format!("many-{count}.mts"));
     std::fs::create_dir_all(path.parent().unwrap()).unwrap();
-    std::fs::write(&path, text).unwrap();
+    let unique = path.with_extension(format!("{:?}.partial", std::thread::current().id()).replace(['(', ')'], ""));
+    std::fs::write(&unique, text).unwrap();
+    std::fs::rename(&unique, &path).unwrap();
     path
 }
 const HEADER_LINES: usize = 9;
