@@ -43,10 +43,16 @@ fn scene_variant(kind: &SceneErrorKind) -> &'static str {
         SceneErrorKind::SingularTransform => "SingularTransform",
         SceneErrorKind::PrimitiveNotCompiled { .. } => "PrimitiveNotCompiled",
         SceneErrorKind::OutOfRangeForNumberType { .. } => "OutOfRangeForNumberType",
+        SceneErrorKind::UnclosedSolid { .. } => "UnclosedSolid",
+        SceneErrorKind::EndWithoutSolid => "EndWithoutSolid",
+        SceneErrorKind::EmptySolid { .. } => "EmptySolid",
+        SceneErrorKind::SolidTooComplex { .. } => "SolidTooComplex",
+        SceneErrorKind::OperandRequired { .. } => "OperandRequired",
+        SceneErrorKind::OpticsOnOperand { .. } => "OpticsOnOperand",
     }
 }
 
-const SCENE_VARIANTS: [&str; 18] = [
+const SCENE_VARIANTS: [&str; 24] = [
     "InvalidUtf8",
     "UnknownKeyword",
     "WrongArgumentCount",
@@ -65,6 +71,12 @@ const SCENE_VARIANTS: [&str; 18] = [
     "SingularTransform",
     "PrimitiveNotCompiled",
     "OutOfRangeForNumberType",
+    "UnclosedSolid",
+    "EndWithoutSolid",
+    "EmptySolid",
+    "SolidTooComplex",
+    "OperandRequired",
+    "OpticsOnOperand",
 ];
 
 /// `FormatErrorKind` is `#[non_exhaustive]`, so its list is by hand; the decoder tests in the

@@ -7,8 +7,9 @@ use core::ops::Deref;
 
 use heapless::Vec;
 
-use crate::geometry::Matrix4;
-use super::{Light, LightSource, Material, Optimizations, Palette, Primitive, Projection, Viewport, Window, MAX_LIGHTS};
+use super::object_description::ObjectDescription;
+use super::solid::{SolidNode, MAX_SOLID_NODES};
+use super::{Light, LightSource, Optimizations, Palette, Projection, Viewport, Window, MAX_LIGHTS};
 
 /// Adaptive antialiasing (thesis fig 2.9): split a pixel whose corners differ by more than
 /// `threshold` (a fraction of full scale), down to `levels` splits.
@@ -22,24 +23,6 @@ pub struct Antialias {
 pub const DEFAULT_DEPTH: u8 = 5;
 /// The deepest tree the format allows.
 pub const MAX_DEPTH: u8 = 8;
-
-/// One object: a primitive instanced by a transform.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct ObjectDescription {
-    pub primitive: Primitive,
-    /// Local -> world, composed from the object's statements in order.
-    pub world_from_object: Matrix4,
-    pub material: Material,
-    /// The line of the `.mts` file where the object starts (0 when not from a file), so that
-    /// later checks can name it.
-    pub line: u32,
-}
-
-impl ObjectDescription {
-    pub fn new(primitive: Primitive, line: u32) -> Self {
-        Self { primitive, world_from_object: Matrix4::IDENTITY, material: Material::default(), line }
-    }
-}
 
 /// A whole scene as written, before any number type is chosen, its objects in `L`.
 #[derive(Clone, Debug, PartialEq)]
@@ -69,6 +52,9 @@ pub struct Description<L> {
     /// The 256-entry look-up table built from the `group` statements.
     pub palette: Palette,
     pub objects: L,
+    /// The operands and operations of every solid (`Primitive::Solid` names its range), in
+    /// post-order (`model::solid`).
+    pub solids: Vec<SolidNode, MAX_SOLID_NODES>,
     /// Where the camera and light settings were written, for errors that scene preparation
     /// finds in them (0: the format's default, not written).
     pub lines: SettingLines,
@@ -116,6 +102,7 @@ impl<L: Default> Default for Description<L> {
             optimizations: Optimizations::ALL,
             palette: Palette::grey(),
             objects: L::default(),
+            solids: Vec::new(),
             lines: SettingLines::default(),
         }
     }

@@ -118,6 +118,20 @@ pub enum SceneErrorKind {
     /// the `window`, `viewplane`, `perspective` or `light` statement that set the value (0 for
     /// a default).
     OutOfRangeForNumberType { what: &'static str, number: &'static str, value: f64, limit: f64 },
+    /// A solid (`union`, `intersection`, `difference`) is never closed with `end`; the line is
+    /// the one that opened it.
+    UnclosedSolid { keyword: &'static str },
+    /// `end` with no solid open.
+    EndWithoutSolid,
+    /// `end` closes a solid with no operand; `opened` is the line that opened it.
+    EmptySolid { keyword: &'static str, opened: u32 },
+    /// A solid needs more of something than the format holds: `what`, how many it `needs`, the
+    /// `capacity` (the line is the solid's first).
+    SolidTooComplex { what: &'static str, needs: usize, capacity: usize },
+    /// An object statement right after a solid opens, before its first operand.
+    OperandRequired { keyword: &'static str },
+    /// `reflect`, `transmit` or `ior` on an operand of a solid: they are the whole solid's.
+    OpticsOnOperand { keyword: &'static str },
 }
 
 impl fmt::Display for SceneErrorKind {
@@ -162,7 +176,7 @@ impl fmt::Display for SceneErrorKind {
             Self::ObjectRequired { keyword } => write!(
                 f,
                 "`{keyword}` changes the most recent object, but no object has started yet \
-                 (start one with cube, sphere, cylinder, cone or torus)"
+                 (start one with cube, sphere, cylinder, cone or torus, or a solid: union, intersection or difference)"
             ),
             Self::TooManyObjects { capacity } => {
                 write!(f, "too many objects: this build holds at most {capacity}")
@@ -180,6 +194,20 @@ impl fmt::Display for SceneErrorKind {
                 write_magnitude(f, *limit)?;
                 f.write_str(" (see docs/hard-cases.md)")
             }
+            Self::UnclosedSolid { keyword } => write!(f, "the `{keyword}` opened here is never closed with `end`"),
+            Self::EndWithoutSolid => f.write_str("`end` with no solid open (open one with union, intersection or difference)"),
+            Self::EmptySolid { keyword, opened } => write!(f, "`end` closes the `{keyword}` of line {opened}, which has no operand (a solid needs at least one object)"),
+            Self::SolidTooComplex { what, needs, capacity } => {
+                write!(f, "the solid needs {needs} {what}, more than the {capacity} the format holds (model::solid)")
+            }
+            Self::OperandRequired { keyword } => write!(
+                f,
+                "`{keyword}` changes the most recent object, but the solid just opened has no operand yet (start one with a primitive or a solid)"
+            ),
+            Self::OpticsOnOperand { keyword } => write!(
+                f,
+                "`{keyword}` on an operand of a solid: reflection and refraction are the whole solid's (write it after the outermost `end`)"
+            ),
         }
     }
 }

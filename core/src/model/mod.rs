@@ -3,6 +3,7 @@
 //! imports none of them (docs/architecture.md; `tests/layers.rs` checks).
 //!
 //! - [`Primitive`]: the closed set of primitives (§4.2.5);
+//! - [`SolidNode`], [`Operation`]: solids of constructive solid geometry as written (§3.2);
 //! - [`Viewport`], [`Window`], [`Projection`]: the camera as written (§4.3);
 //! - [`Material`] and [`PreparedMaterial`]: surface constants (table 4.1);
 //! - [`Light`], [`LightSource`]: the lights as written;
@@ -17,16 +18,20 @@ mod error;
 mod light;
 mod material;
 mod object;
+mod object_description;
 mod optimizations;
 mod primitive;
+mod solid;
 mod view;
 
 pub use colour::{Palette, Rgb4, Rgb888};
-pub use description::{Antialias, Description, ObjectDescription, SceneDescription, SettingLines, DEFAULT_DEPTH, MAX_DEPTH};
+pub use description::{Antialias, Description, SceneDescription, SettingLines, DEFAULT_DEPTH, MAX_DEPTH};
+pub use object_description::ObjectDescription;
 pub use error::{SceneError, SceneErrorKind, Token, TOKEN_EXCERPT_BYTES};
 pub use light::{Light, LightSource, MAX_LIGHTS};
 pub use material::{Material, PreparedMaterial};
 pub use object::{Object, Objects};
 pub use optimizations::Optimizations;
-pub use primitive::{Primitive, Tube};
+pub use primitive::{Primitive, SolidRange, Tube};
+pub use solid::{solid_needs_and_box, Operation, SolidNeeds, SolidNode, MAX_SOLID_NODES, MAX_SOLID_STACK, MAX_SPANS};
 pub use view::{Projection, Viewport, Window};

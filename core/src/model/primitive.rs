@@ -2,6 +2,7 @@
 //! and feature), in `shapes/` (its intersection) and in `optimize/bounding_volume.rs` (its
 //! bounding volume); docs/architecture.md has the checklist.
 
+
 /// The four unit primitives of §4.2.5 (fig 4.6), in the thesis's enum order, and the ring torus
 /// §5.2.1 proposes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -17,6 +18,11 @@ pub enum Primitive {
     /// The circle of radius 1 about +z in the plane z = 0, swept by a tube of the given radius
     /// (`torus R`, 0 < R < 1: a ring torus).
     Torus(Tube),
+    /// A solid of constructive solid geometry (`union`, `intersection`, `difference` … `end`):
+    /// to the optimizations the unit cube, which its transform makes the box enclosing the
+    /// solid (§3.3.6); its operands are the scene's solid nodes in the range
+    /// (`model::solid`, `csg::solid`). Not a keyword: no `Primitive::ALL` entry.
+    Solid(SolidRange),
 }
 
 /// A ring torus's tube radius, in steps of 2⁻¹⁵ of its major radius (1 to 32767 steps): the
@@ -71,7 +77,7 @@ impl Primitive {
     /// One of each kind (the torus with a quarter tube): for the keywords, the features, tests.
     pub const ALL: [Primitive; 5] = [Primitive::Cube, Primitive::Sphere, Primitive::Cylinder, Primitive::Cone, Primitive::Torus(Tube::QUARTER)];
 
-    /// The kind's place in [`Primitive::ALL`] (a torus of any tube is 4).
+    /// The kind's place in [`Primitive::ALL`] (a torus of any tube is 4; a solid, 5, after them).
     pub const fn index(self) -> usize {
         match self {
             Primitive::Cube => 0,
@@ -79,6 +85,7 @@ impl Primitive {
             Primitive::Cylinder => 2,
             Primitive::Cone => 3,
             Primitive::Torus(_) => 4,
+            Primitive::Solid(_) => 5,
         }
     }
 
@@ -90,6 +97,7 @@ impl Primitive {
             Primitive::Cylinder => cfg!(feature = "cylinder"),
             Primitive::Cone => cfg!(feature = "cone"),
             Primitive::Torus(_) => cfg!(feature = "torus"),
+            Primitive::Solid(_) => cfg!(feature = "csg"),
         }
     }
 
@@ -101,7 +109,33 @@ impl Primitive {
             Primitive::Cylinder => "cylinder",
             Primitive::Cone => "cone",
             Primitive::Torus(_) => "torus",
+            Primitive::Solid(_) => "a solid (union, intersection, difference)",
+        }
+    }
+
+    /// The primitive's own axis-aligned box (a solid's is the unit cube, see [`Primitive::Solid`]).
+    pub fn local_box(self) -> [[f64; 3]; 2] {
+        match self {
+            Primitive::Cube | Primitive::Solid(_) => [[0.0; 3], [1.0; 3]],
+            Primitive::Sphere => [[-1.0; 3], [1.0; 3]],
+            Primitive::Cylinder | Primitive::Cone => [[-1.0, -1.0, 0.0], [1.0, 1.0, 1.0]],
+            Primitive::Torus(tube) => {
+                let (r, outer) = (tube.to_f64(), 1.0 + tube.to_f64());
+                [[-outer, -outer, -r], [outer, outer, r]]
+            }
         }
     }
 }
 
+/// Where a solid's nodes are in the scene's list: `count` nodes from `first`, the last its root.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct SolidRange {
+    pub first: u16,
+    pub count: u16,
+}
+
+impl SolidRange {
+    pub fn nodes(self) -> core::ops::Range<usize> {
+        usize::from(self.first)..usize::from(self.first) + usize::from(self.count)
+    }
+}

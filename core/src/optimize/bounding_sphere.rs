@@ -31,15 +31,7 @@ impl<N: Number> BoundingSphere<N> {
     /// The sphere about the centre of the primitive's box in world space through its eight
     /// corners, widened by the margin (computed in `f64` at preparation).
     pub fn of(primitive: Primitive, world_from_object: &Matrix4) -> Self {
-        let (low, high) = match primitive {
-            Primitive::Cube => ([0.0; 3], [1.0; 3]),
-            Primitive::Sphere => ([-1.0; 3], [1.0; 3]),
-            Primitive::Cylinder | Primitive::Cone => ([-1.0, -1.0, 0.0], [1.0; 3]),
-            Primitive::Torus(tube) => {
-                let (reach, half) = (1.0 + tube.to_f64(), tube.to_f64());
-                ([-reach, -reach, -half], [reach, reach, half])
-            }
-        };
+        let [low, high] = primitive.local_box();
         let corners: [[f64; 3]; 8] = core::array::from_fn(|i| {
             let pick = |axis: usize| if i >> axis & 1 == 0 { low[axis] } else { high[axis] };
             world_from_object.transform_point([pick(0), pick(1), pick(2)])

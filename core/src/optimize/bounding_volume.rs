@@ -77,6 +77,8 @@ pub fn unit_volume(primitive: Primitive) -> [[f64; 3]; 8] {
             let (reach, half) = (1.0 + tube.to_f64(), tube.to_f64());
             VOLUMES[1].map(|[x, y, z]| [x * reach, y * reach, z * half])
         }
+        // A solid's box is the unit cube through its transform.
+        Primitive::Solid(_) => VOLUMES[0],
         other => VOLUMES[other.index()],
     }
 }
@@ -88,6 +90,7 @@ fn unit_faces(primitive: Primitive) -> [([f64; 3], f64); 6] {
             let (reach, half) = (1.0 + tube.to_f64(), tube.to_f64());
             FACES[1].map(|(n, _)| (n, if n[2] != 0.0 { half } else { reach }))
         }
+        Primitive::Solid(_) => FACES[0],
         other => FACES[other.index()],
     }
 }
@@ -139,8 +142,8 @@ impl ObjectGeometry {
         let ring = |k: usize| RING[k];
         let world = |p: [f64; 3]| self.world_from_object.transform_point(p);
         match self.primitive {
-            // The torus's flat box: its 8 corners, as for the cube.
-            Primitive::Cube | Primitive::Torus(_) => {
+            // The torus's flat box and a solid's enclosure: their 8 corners, as for the cube.
+            Primitive::Cube | Primitive::Torus(_) | Primitive::Solid(_) => {
                 for (slot, vertex) in out.iter_mut().zip(self.volume()) {
                     *slot = vertex;
                 }

@@ -485,7 +485,7 @@ mod tests {
         loop {
             let (x, y, z) = (rng.range(-1.0, 1.0), rng.range(-1.0, 1.0), rng.range(-1.0, 1.0));
             let inside = match primitive {
-                Primitive::Cube => return [x.abs(), y.abs(), z.abs()],
+                Primitive::Cube | Primitive::Solid(_) => return [x.abs(), y.abs(), z.abs()],
                 Primitive::Sphere => x * x + y * y + z * z <= 1.0,
                 Primitive::Cylinder => x * x + y * y <= 1.0,
                 Primitive::Cone => x * x + y * y <= z * z,

@@ -47,6 +47,7 @@ mod tests;
 use crate::storage::List;
 use crate::model::{SceneError, SceneErrorKind, Token};
 use crate::model::{Antialias, Light, LightSource, Description, ObjectDescription, Optimizations, Primitive, Projection, Tube, SceneDescription, Viewport, Window, MAX_DEPTH, MAX_LIGHTS};
+use crate::model::{solid_needs_and_box, Operation, SolidNode, SolidRange, MAX_SOLID_NODES, MAX_SOLID_STACK, MAX_SPANS};
 use crate::model::Rgb4;
 
 /// The most arguments any fixed-arity statement takes (`group N R G B up`).
@@ -70,14 +71,62 @@ pub fn parse_into_list<L: List<ObjectDescription>>(text: &[u8]) -> Result<Descri
 fn parse_into<L: List<ObjectDescription>>(text: &[u8], scene: &mut Description<L>) -> Result<(), SceneError> {
     let text = text.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(text);
     let mut line: u32 = 0;
+    let mut solids = SolidsBeingWritten::default();
     for raw in text.split(|&b| b == b'\n') {
         line = line.saturating_add(1);
         let raw = raw.strip_suffix(b"\r").unwrap_or(raw);
         let code = raw.split(|&b| b == b'#').next().unwrap_or(&[]);
         let code = core::str::from_utf8(code).map_err(|_| SceneError::new(line, SceneErrorKind::InvalidUtf8))?;
-        statement(code, line, scene)?;
+        statement(code, line, scene, &mut solids)?;
     }
-    finish_object(scene)
+    if let Some(open) = solids.open.last() {
+        return Err(SceneError::new(open.line, SceneErrorKind::UnclosedSolid { keyword: open.operation.name() }));
+    }
+    finish_object(scene, &solids)
+}
+
+/// The most solids open inside one another while a scene is read.
+const MAX_NESTING: usize = 16;
+/// No material statement has reached the leaf yet (see [`SolidsBeingWritten::material_depth`]).
+const NO_MATERIAL: u8 = u8::MAX;
+
+/// The parser's place among the solids (`union` … `end`): which are open, and what the object
+/// statements change.
+struct SolidsBeingWritten {
+    /// The solids opened and not yet closed, outermost first.
+    open: heapless::Vec<OpenSolid, MAX_NESTING>,
+    /// What `scale`, `colour`, … change.
+    target: Target,
+    /// For each node of `Description::solids`, the nesting depth of what set the leaf's material:
+    /// the leaf itself or an enclosing solid (0: the outermost). A solid's material statement
+    /// reaches only the leaves no deeper node set, so an operand keeps its own.
+    material_depth: [u8; MAX_SOLID_NODES],
+}
+
+impl Default for SolidsBeingWritten {
+    fn default() -> Self {
+        Self { open: heapless::Vec::new(), target: Target::Object, material_depth: [NO_MATERIAL; MAX_SOLID_NODES] }
+    }
+}
+
+struct OpenSolid {
+    operation: Operation,
+    line: u32,
+    /// Operands started so far.
+    operands: u16,
+    /// Its first node in `Description::solids` (its nodes are written after it opens).
+    first: usize,
+}
+
+#[derive(Clone, Copy)]
+enum Target {
+    /// The most recent object of the scene's list (none yet: an error).
+    Object,
+    /// A solid was opened and no operand has started yet (an error).
+    NoOperand,
+    /// The nodes of `Description::solids` from `first` to the end: an operand (a primitive or a
+    /// closed solid) or a whole solid, at nesting `depth` (0: a solid of the scene's list).
+    Nodes { first: usize, depth: u8 },
 }
 
 /// Splits a statement into its tokens.
@@ -85,14 +134,59 @@ fn tokens(code: &str) -> impl Iterator<Item = &str> {
     code.split([' ', '\t']).filter(|token| !token.is_empty())
 }
 
-/// The check at the end of each object: its transform must be invertible.
-fn finish_object<L: List<ObjectDescription>>(scene: &Description<L>) -> Result<(), SceneError> {
-    match scene.objects.last() {
-        Some(object) if object.world_from_object.affine_inverse().is_none() => {
-            Err(SceneError::new(object.line, SceneErrorKind::SingularTransform))
-        }
-        _ => Ok(()),
+/// The check at the end of each object: its transform must be invertible. A solid's end is where
+/// its leaves' transforms are final: each must be invertible, the tree must fit the walk's
+/// capacities, and the object becomes the box that encloses the solid (§3.3.6).
+fn finish_object<L: List<ObjectDescription>>(scene: &mut Description<L>, solids: &SolidsBeingWritten) -> Result<(), SceneError> {
+    let Some(object) = scene.objects.last_mut() else { return Ok(()) };
+    let Primitive::Solid(range) = object.primitive else {
+        return match object.world_from_object.affine_inverse() {
+            None => Err(SceneError::new(object.line, SceneErrorKind::SingularTransform)),
+            Some(_) => Ok(()),
+        };
+    };
+    if !matches!(solids.target, Target::Nodes { depth: 0, .. }) {
+        // Still open: the end of the input reports it.
+        return Ok(());
     }
+    let nodes = scene.solids.get(range.nodes()).unwrap_or(&[]);
+    for node in nodes {
+        if let SolidNode::Leaf(leaf) = node {
+            if leaf.world_from_object.affine_inverse().is_none() {
+                return Err(SceneError::new(leaf.line, SceneErrorKind::SingularTransform));
+            }
+        }
+    }
+    let error = |kind| SceneError::new(object.line, kind);
+    let (needs, enclosure) = solid_needs_and_box(nodes).ok_or(error(SceneErrorKind::SingularTransform))?;
+    if needs.spans > MAX_SPANS {
+        return Err(error(SceneErrorKind::SolidTooComplex { what: "spans along a ray", needs: needs.spans, capacity: MAX_SPANS }));
+    }
+    if needs.stack > MAX_SOLID_STACK {
+        return Err(error(SceneErrorKind::SolidTooComplex { what: "span lists held at once by the walk", needs: needs.stack, capacity: MAX_SOLID_STACK }));
+    }
+    // An empty enclosure (operands whose boxes do not meet) leaves nothing to see; the union of
+    // the leaves' boxes still bounds it and keeps the transform invertible.
+    let enclosure = if (0..3).all(|axis| enclosure[1][axis] > enclosure[0][axis]) {
+        enclosure
+    } else {
+        nodes.iter().filter_map(|node| if let SolidNode::Leaf(leaf) = node { Some(leaf.world_box()) } else { None }).fold(
+            [[f64::INFINITY; 3], [f64::NEG_INFINITY; 3]],
+            |[low, high], [a, b]| [core::array::from_fn(|i| low[i].min(a[i])), core::array::from_fn(|i| high[i].max(b[i]))],
+        )
+    };
+    let size: [f64; 3] = core::array::from_fn(|axis| enclosure[1][axis] - enclosure[0][axis]);
+    let mut world_from_box = crate::geometry::Matrix4::IDENTITY;
+    if size.iter().any(|extent| !(*extent > 0.0 && extent.is_finite())) {
+        return Err(error(SceneErrorKind::SingularTransform));
+    }
+    world_from_box.scale(size);
+    world_from_box.translate(enclosure[0]);
+    if world_from_box.affine_inverse().is_none() {
+        return Err(error(SceneErrorKind::SingularTransform));
+    }
+    object.world_from_object = world_from_box;
+    Ok(())
 }
 
 /// The format's statements, each written once: its keyword, its arguments (fewest, most;
@@ -104,13 +198,19 @@ macro_rules! keywords {
         enum Keyword {
             $($variant,)*
             Primitive(Primitive),
+            /// `union`, `intersection`, `difference`: opens a solid.
+            Solid(Operation),
         }
 
         impl Keyword {
             fn from_token(token: &str) -> Option<Self> {
                 match token {
                     $($name => Some(Keyword::$variant),)*
-                    _ => Primitive::ALL.into_iter().find(|primitive| primitive.name() == token).map(Keyword::Primitive),
+                    _ => Primitive::ALL
+                        .into_iter()
+                        .find(|primitive| primitive.name() == token)
+                        .map(Keyword::Primitive)
+                        .or_else(|| Operation::ALL.into_iter().find(|operation| operation.name() == token).map(Keyword::Solid)),
                 }
             }
 
@@ -118,6 +218,7 @@ macro_rules! keywords {
                 match self {
                     $(Keyword::$variant => $name,)*
                     Keyword::Primitive(primitive) => primitive.name(),
+                    Keyword::Solid(operation) => operation.name(),
                 }
             }
 
@@ -127,6 +228,7 @@ macro_rules! keywords {
                     $(Keyword::$variant => ($fewest, $most, $usage),)*
                     Keyword::Primitive(Primitive::Torus(_)) => (1, Some(1), "torus R"),
                     Keyword::Primitive(primitive) => (0, Some(0), primitive.name()),
+                    Keyword::Solid(operation) => (0, Some(0), operation.name()),
                 }
             }
 
@@ -134,7 +236,7 @@ macro_rules! keywords {
             fn needs_object(self) -> bool {
                 match self {
                     $(Keyword::$variant => $changes_object,)*
-                    Keyword::Primitive(_) => false,
+                    Keyword::Primitive(_) | Keyword::Solid(_) => false,
                 }
             }
         }
@@ -169,6 +271,7 @@ keywords! {
     Ior "ior" (1, Some(1)) "ior N" true;
     Depth "depth" (1, Some(1)) "depth N" false;
     Antialias "antialias" (1, Some(2)) "antialias off | antialias T [L]" false;
+    End "end" (0, Some(0)) "end" false;
 }
 
 /// One statement's arguments, with the helpers that read them and build errors.
@@ -270,6 +373,7 @@ fn statement<L: List<ObjectDescription>>(
     code: &str,
     line: u32,
     scene: &mut Description<L>,
+    solids: &mut SolidsBeingWritten,
 ) -> Result<(), SceneError> {
     let mut words = tokens(code);
     let Some(first) = words.next() else {
@@ -384,15 +488,59 @@ fn statement<L: List<ObjectDescription>>(
         }
         Keyword::Optimize => scene.optimizations = optimize(code, line)?,
         Keyword::Primitive(primitive) => {
-            finish_object(scene)?;
             let primitive = match primitive {
                 Primitive::Torus(_) => Primitive::Torus(tube(&s)?),
                 other => other,
             };
-            scene
-                .objects
-                .push(ObjectDescription::new(primitive, line))
-                .map_err(|_| s.error(SceneErrorKind::TooManyObjects { capacity: L::CAPACITY }))?;
+            if solids.open.is_empty() {
+                finish_object(scene, solids)?;
+                scene
+                    .objects
+                    .push(ObjectDescription::new(primitive, line))
+                    .map_err(|_| s.error(SceneErrorKind::TooManyObjects { capacity: L::CAPACITY }))?;
+                solids.target = Target::Object;
+            } else {
+                start_operand(&s, scene, solids)?;
+                let first = scene.solids.len();
+                push_node(&s, scene, SolidNode::Leaf(ObjectDescription::new(primitive, line)))?;
+                solids.target = Target::Nodes { first, depth: solids.open.len() as u8 };
+            }
+        }
+        Keyword::Solid(operation) => {
+            if solids.open.is_empty() {
+                finish_object(scene, solids)?;
+                let range = SolidRange { first: scene.solids.len() as u16, count: 0 };
+                scene
+                    .objects
+                    .push(ObjectDescription::new(Primitive::Solid(range), line))
+                    .map_err(|_| s.error(SceneErrorKind::TooManyObjects { capacity: L::CAPACITY }))?;
+            } else {
+                start_operand(&s, scene, solids)?;
+            }
+            solids
+                .open
+                .push(OpenSolid { operation, line, operands: 0, first: scene.solids.len() })
+                .map_err(|_| s.error(SceneErrorKind::SolidTooComplex { what: "solids open inside one another", needs: MAX_NESTING + 1, capacity: MAX_NESTING }))?;
+            solids.target = Target::NoOperand;
+        }
+        Keyword::End => {
+            let closed = solids.open.pop().ok_or(s.error(SceneErrorKind::EndWithoutSolid))?;
+            if closed.operands == 0 {
+                return Err(s.error(SceneErrorKind::EmptySolid { keyword: closed.operation.name(), opened: closed.line }));
+            }
+            if closed.operands >= 2 {
+                push_node(&s, scene, SolidNode::Combine { operation: closed.operation, line: closed.line })?;
+            }
+            let first = closed.first;
+            let depth = solids.open.len() as u8;
+            solids.target = Target::Nodes { first, depth };
+            if solids.open.is_empty() {
+                if let Some(object) = scene.objects.last_mut() {
+                    if let Primitive::Solid(range) = &mut object.primitive {
+                        range.count = (scene.solids.len() - usize::from(range.first)) as u16;
+                    }
+                }
+            }
         }
         Keyword::Scale
         | Keyword::Rotate
@@ -406,7 +554,70 @@ fn statement<L: List<ObjectDescription>>(
         | Keyword::Cmy
         | Keyword::Reflect
         | Keyword::Transmit
-        | Keyword::Ior => object_statement(&s, scene)?,
+        | Keyword::Ior => match solids.target {
+            Target::Object => object_statement(&s, scene)?,
+            Target::NoOperand => return Err(s.error(SceneErrorKind::OperandRequired { keyword: s.keyword.name() })),
+            Target::Nodes { first, depth } => solid_statement(&s, scene, solids, first, depth)?,
+        },
+    }
+    Ok(())
+}
+
+/// A new operand of the innermost open solid: the operand before it is complete, so a chain
+/// of more than two operands combines it now (`A op B op C` is `(A op B) op C`).
+fn start_operand<L: List<ObjectDescription>>(s: &Statement<'_>, scene: &mut Description<L>, solids: &mut SolidsBeingWritten) -> Result<(), SceneError> {
+    let Some(open) = solids.open.last_mut() else { return Ok(()) };
+    open.operands = open.operands.saturating_add(1);
+    let (operation, line, operands) = (open.operation, open.line, open.operands);
+    if operands >= 3 {
+        push_node(s, scene, SolidNode::Combine { operation, line })?;
+    }
+    Ok(())
+}
+
+/// Appends a node to the scene's solids.
+fn push_node<L>(s: &Statement<'_>, scene: &mut Description<L>, node: SolidNode) -> Result<(), SceneError> {
+    scene.solids.push(node).map_err(|_| s.error(SceneErrorKind::SolidTooComplex { what: "primitives and operations in the scene's solids", needs: MAX_SOLID_NODES + 1, capacity: MAX_SOLID_NODES }))
+}
+
+/// An object statement for an operand or a solid: the nodes from `first` on. A transform
+/// composes on top of each leaf's own; a material statement reaches the leaves that no deeper
+/// operand gave a material of its own (POV-Ray's rule), and, for a solid of the scene's list
+/// (`depth` 0), the object's material too. Reflection and refraction are the whole solid's
+/// (the ray tree's optics are per object): an operand may not set them.
+fn solid_statement<L: List<ObjectDescription>>(
+    s: &Statement<'_>,
+    scene: &mut Description<L>,
+    solids: &mut SolidsBeingWritten,
+    first: usize,
+    depth: u8,
+) -> Result<(), SceneError> {
+    let optics = matches!(s.keyword, Keyword::Reflect | Keyword::Transmit | Keyword::Ior);
+    if optics && depth > 0 {
+        return Err(s.error(SceneErrorKind::OpticsOnOperand { keyword: s.keyword.name() }));
+    }
+    let transform = matches!(s.keyword, Keyword::Scale | Keyword::Rotate | Keyword::Translate);
+    if depth == 0 {
+        // The solid's own object: its material (the ray tree's optics, and what its operands
+        // inherit); its transform is the enclosure's, made at its end.
+        object_statement(s, scene)?;
+    }
+    let object_material = scene.objects.last().map(|object| object.material);
+    for (index, node) in scene.solids.iter_mut().enumerate().skip(first) {
+        let SolidNode::Leaf(leaf) = node else { continue };
+        if transform {
+            apply(s, leaf)?;
+            continue;
+        }
+        let Some(owner) = solids.material_depth.get_mut(index) else { continue };
+        if *owner != NO_MATERIAL && *owner > depth {
+            continue;
+        }
+        *owner = depth;
+        match (depth, object_material) {
+            (0, Some(material)) => leaf.material = material,
+            _ => apply(s, leaf)?,
+        }
     }
     Ok(())
 }
@@ -456,6 +667,11 @@ fn object_statement<L: List<ObjectDescription>>(
         .objects
         .last_mut()
         .ok_or_else(|| s.error(SceneErrorKind::ObjectRequired { keyword: s.keyword.name() }))?;
+    apply(s, object)
+}
+
+/// An object statement applied to one object description.
+fn apply(s: &Statement<'_>, object: &mut ObjectDescription) -> Result<(), SceneError> {
     let material = &mut object.material;
     match s.keyword {
         Keyword::Scale => {

@@ -624,7 +624,7 @@ fn exact_messages() {
         ("viewplane 1e400", "line 1: viewplane D: number `1e400` is out of range (too large for a 64-bit float)"),
         ("window 1 0 0 1", "line 1: window: X1 must be less than X2"),
         ("sphere\nscale 0 1 1", "line 2: singular transform: the object's transform cannot be inverted"),
-        ("ka 1", "line 1: `ka` changes the most recent object, but no object has started yet (start one with cube, sphere, cylinder, cone or torus)"),
+        ("ka 1", "line 1: `ka` changes the most recent object, but no object has started yet (start one with cube, sphere, cylinder, cone or torus, or a solid: union, intersection or difference)"),
         ("parallel 0 0 0", "line 1: the direction is the zero vector (or too small or too large for its length to be computed)"),
     ] {
         assert_eq!(err(text).to_string(), message);
@@ -662,4 +662,73 @@ fn chapter_five_statements_parse_with_their_defaults_and_ranges() {
     check("antialias on", 1, &["antialias T: malformed number `on`"]);
     check("light point 0 0 0 -1", 1, &["light I: `-1` is out of range (must be at least 0)"]);
     check("light point 0 0 0\nlight point 0 0 0\nlight point 0 0 0\nlight point 0 0 0\nlight point 0 0 0", 5, &["too many lights: a scene holds at most 4"]);
+}
+
+/// The nodes of the scene's solids as a compact string: `P` a primitive (its keyword's first
+/// letter), `U`, `I`, `D` an operation.
+fn solid_shape(scene: &SceneDescription<64>) -> std::string::String {
+    scene
+        .solids
+        .iter()
+        .map(|node| match node {
+            SolidNode::Leaf(leaf) => leaf.primitive.name().chars().next().unwrap().to_ascii_lowercase(),
+            SolidNode::Combine { operation: Operation::Union, .. } => 'U',
+            SolidNode::Combine { operation: Operation::Intersection, .. } => 'I',
+            SolidNode::Combine { operation: Operation::Difference, .. } => 'D',
+        })
+        .collect()
+}
+
+#[test]
+fn solids_parse_into_post_order_chains_and_nest() {
+    // `difference A B C` is (A − B) − C; a nested solid is one operand.
+    let scene = ok("difference\n cube\n sphere\n cylinder\nend\nsphere\nunion\n cone\n intersection\n  sphere\n  cube\n end\nend\n");
+    assert_eq!(solid_shape(&scene), "csDcDcscIU");
+    assert_eq!(scene.objects.len(), 3);
+    assert_eq!(scene.objects[0].primitive, Primitive::Solid(SolidRange { first: 0, count: 5 }));
+    assert_eq!(scene.objects[1].primitive, Primitive::Sphere);
+    assert_eq!(scene.objects[2].primitive, Primitive::Solid(SolidRange { first: 5, count: 5 }));
+    // One operand: the solid is that operand.
+    assert_eq!(solid_shape(&ok("union\n torus 0.5\nend\n")), "t");
+}
+
+#[test]
+fn statements_after_end_compose_on_every_operand_and_materials_are_inherited() {
+    let scene = ok("union\n sphere\n  translate 1 0 0\n  colour 3\n sphere\n  kd 0.9\n difference\n  cube\n  cube\n   colour 5\n end\n  colour 7\nend\n scale 2 2 2\n colour 9\n ks 0.1\n");
+    let leaves: std::vec::Vec<&ObjectDescription> = scene.solids.iter().filter_map(|node| if let SolidNode::Leaf(leaf) = node { Some(leaf) } else { None }).collect();
+    // The first sphere was moved, then the whole solid scaled: its centre is at x = 2.
+    assert_eq!(leaves[0].world_from_object.transform_point([0.0; 3]), [2.0, 0.0, 0.0]);
+    assert_eq!(leaves[1].world_from_object.transform_point([1.0, 1.0, 1.0]), [2.0, 2.0, 2.0]);
+    // Its own colour kept; the second sphere set kd, so it keeps its own (default colour);
+    // the inner difference's first cube takes the difference's colour 7, the second its own 5.
+    assert_eq!((leaves[0].material.colour, leaves[0].material.ks), (3, Material::default().ks));
+    assert_eq!((leaves[1].material.colour, leaves[1].material.kd), (0, 0.9));
+    assert_eq!((leaves[2].material.colour, leaves[3].material.colour), (7, 5));
+    // The solid's own material: what nothing below overrides.
+    assert_eq!((scene.objects[0].material.colour, scene.objects[0].material.ks), (9, 0.1));
+    // The object is the enclosing box: the spheres' union with the difference's left cube.
+    let corner = scene.objects[0].world_from_object.transform_point([0.0; 3]);
+    let far = scene.objects[0].world_from_object.transform_point([1.0; 3]);
+    assert_eq!((corner, far), ([-2.0, -2.0, -2.0], [4.0, 2.0, 2.0]));
+}
+
+#[test]
+fn an_intersection_is_enclosed_by_the_overlap_and_a_difference_by_its_left_operand() {
+    let scene = ok("intersection\n cube\n  scale 4 4 4\n sphere\n  translate 4 4 4\nend\ndifference\n cube\n sphere\n  scale 5 5 5\nend\n");
+    let boxes: std::vec::Vec<([f64; 3], [f64; 3])> =
+        scene.objects.iter().map(|object| (object.world_from_object.transform_point([0.0; 3]), object.world_from_object.transform_point([1.0; 3]))).collect();
+    assert_eq!(boxes, [([3.0; 3], [4.0; 3]), ([0.0; 3], [1.0; 3])]);
+}
+
+#[test]
+fn solid_errors_name_their_lines() {
+    assert_eq!(err("cube\nunion\n sphere\n").to_string(), "line 2: the `union` opened here is never closed with `end`");
+    assert_eq!(err("end").to_string(), "line 1: `end` with no solid open (open one with union, intersection or difference)");
+    assert_eq!(err("union\n intersection\n end\nend").to_string(), "line 3: `end` closes the `intersection` of line 2, which has no operand (a solid needs at least one object)");
+    assert!(matches!(err("union\n sphere\n union\n  cube\n  ior 1.5\n end\nend").kind, SceneErrorKind::OpticsOnOperand { keyword: "ior" }));
+    assert!(matches!(err("difference\ncolour 2\n").kind, SceneErrorKind::OperandRequired { keyword: "colour" }));
+    // A singular operand is named by its own line, found when the solid is complete.
+    assert_eq!(err("union\n sphere\n cube\n  scale 1e-300 1 1\n  scale 1e-300 1 1\nend").line, 3);
+    // Reflection on the whole solid is allowed.
+    assert_eq!(ok("union\n sphere\nend\n reflect 0.5\n").objects[0].material.reflect, 0.5);
 }

@@ -6,6 +6,7 @@ mod antialias;
 mod coverage;
 mod direct_lighting;
 mod fill;
+mod intersect;
 mod mode;
 mod order;
 mod pixel_value;
@@ -21,7 +22,8 @@ mod statistics;
 mod surface;
 mod walk;
 
-pub use primary::{nearest_hit, nearest_hit_cached, NearestHit};
+pub use intersect::NearestHit;
+pub use primary::{nearest_hit, nearest_hit_cached};
 pub use order::{render, Order, Pass, Pga, PixelMode, Progressive, Rgb, Rows, Streamed, Whole};
 pub use progressive::{traced_in_pass, PassStatistics, PASSES, PASS_SIZES};
 pub use shadow_ray::{in_shadow, in_shadow_cached, in_shadow_culled, shadow_origin, BlockersBeyond, ShadowCache, ShadowCulling};

@@ -62,7 +62,7 @@ pub(crate) fn primary_surface_then<N: Number, R, C: Config<Number = N>>(
     statistics.rays_traced += 1;
     let hit = nearest_hit_cached(scene, &ray, pixel, statistics, &mut cache.last_hit)?;
     statistics.rays_intersected += 1;
-    let object = scene.objects.get(hit.object)?;
+    let object = super::intersect::surface_of(scene, &hit)?;
     // Normal to world space through the inverse transpose (the thesis used the forward
     // matrix, digest §11 B2), facing the viewer (seen from inside, a surface's inner side).
     let at = SurfacePoint::new(object.object_from_world.transposed_vector(hit.local_normal), &ray, hit.t, hit.object);

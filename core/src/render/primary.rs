@@ -7,6 +7,7 @@
 //! are tested in, so reordering optimizations (Grid, Sortlist) cannot change the image; the
 //! thesis gave ties to whichever was tested first (digest §12).
 
+use super::intersect::{hit_object, NearestHit};
 use super::Statistics;
 use crate::camera::PixelPosition;
 use crate::geometry::{Ray, Vector3};
@@ -17,14 +18,6 @@ use crate::storage::{Index, Table};
 use crate::model::Object;
 use crate::scene::Prepared;
 use crate::shapes::Interval;
-
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct NearestHit<N> {
-    pub object: usize,
-    pub t: N,
-    /// Object-space normal, not normalised.
-    pub local_normal: Vector3<N>,
-}
 
 /// The primary ray `ray` in the object's space: for a perspective view from `eye`, the eye in
 /// object space prepared with the scene ([`Scene::eyes`]; the same bits as
@@ -67,9 +60,9 @@ pub fn nearest_hit_cached<N: Number, C: Config<Number = N>>(
         // Tested unbounded, before anything else: its result is final, so the loop skips it.
         if let Some(object) = scene.objects.get(index) {
             statistics.ro_tests += 1;
-            if let Some(hit) = object.primitive.intersect(&local_ray(object, scene.eyes.slots().get(index).filter(|_| from_eye), ray), Interval::unbounded()) {
+            if let Some(hit) = hit_object(scene, index, object, ray, || local_ray(object, scene.eyes.slots().get(index).filter(|_| from_eye), ray), Interval::unbounded()) {
                 statistics.ro_hits += 1;
-                nearest = Some(NearestHit { object: index, t: hit.t, local_normal: hit.normal });
+                nearest = Some(hit);
             }
         }
     }
@@ -106,9 +99,9 @@ pub fn nearest_hit_cached<N: Number, C: Config<Number = N>>(
         };
         let Some(object) = scene.objects.get(index) else { return true };
         statistics.ro_tests += 1;
-        if let Some(hit) = object.primitive.intersect(&local_ray(object, scene.eyes.slots().get(index).filter(|_| from_eye), ray), interval) {
+        if let Some(hit) = hit_object(scene, index, object, ray, || local_ray(object, scene.eyes.slots().get(index).filter(|_| from_eye), ray), interval) {
             statistics.ro_hits += 1;
-            *nearest = Some(NearestHit { object: index, t: hit.t, local_normal: hit.normal });
+            *nearest = Some(hit);
         }
         true
     }

@@ -13,13 +13,14 @@
 //! side they travel into: a reflected ray on the incoming side, a refracted one on the far side.
 
 use super::direct_lighting::direct_lighting;
+use super::intersect::NearestHit;
 use super::secondary::nearest_secondary_hit;
 use super::shadow_ray::{shadow_origin, ShadowCache, ShadowCulling};
 use super::Statistics;
 use super::surface::{NodeColours, SurfacePoint};
 use crate::camera::PixelPosition;
 use crate::geometry::reflection::{reflected, refracted};
-use crate::geometry::{Ray, Vector3};
+use crate::geometry::Ray;
 use crate::number::Number;
 use crate::config::Config;
 use crate::storage::List;
@@ -117,7 +118,7 @@ pub(crate) fn trace_tree<N: Number, Colours: NodeColours<N>, C: Config<Number = 
             *count += 1;
         }
         let child = match nearest_secondary_hit(scene, &ray, statistics) {
-            Some(hit) => surface(context, &ray, hit.object, hit.t, hit.local_normal, statistics, cache),
+            Some(hit) => surface(context, &ray, &hit, statistics, cache),
             None => None,
         };
         match child {
@@ -141,15 +142,14 @@ pub(crate) fn trace_tree<N: Number, Colours: NodeColours<N>, C: Config<Number = 
 fn surface<N: Number, Colours: NodeColours<N>, C: Config<Number = N>>(
     context: &TreeContext<'_, '_, N, Colours, C>,
     ray: &Ray<N>,
-    object: usize,
-    t: N,
-    local_normal: Vector3<N>,
+    hit: &NearestHit<N>,
     statistics: &mut Statistics,
     cache: &mut ShadowCache<C::Index>,
 ) -> Option<(SurfacePoint<N>, [N; 3])> {
     let scene = context.scene;
-    let prepared = scene.objects.get(object)?;
-    let at = SurfacePoint::new(prepared.object_from_world.transposed_vector(local_normal), ray, t, object);
+    let object = hit.object;
+    let prepared = super::intersect::surface_of(scene, hit)?;
+    let at = SurfacePoint::new(prepared.object_from_world.transposed_vector(hit.local_normal), ray, hit.t, object);
     let lighting = direct_lighting(scene, object, at.point, at.normal, ray.direction, prepared.material.power, statistics, cache, context.culling);
     Some((at, context.colours.local(&prepared.material, lighting, context.pixel)))
 }
@@ -157,6 +157,7 @@ fn surface<N: Number, Colours: NodeColours<N>, C: Config<Number = N>>(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::Vector3;
     use crate::parser::parse;
 
     /// A refracted ray that enters a glass ball starts just inside it and must find the ball's

@@ -4,7 +4,8 @@
 //! primitive. The ray's own object is tested too: a refracted ray inside a sphere must find the
 //! sphere's far side. Exact ties go to the object that comes first, as for primary rays.
 
-use super::primary::NearestHit;
+use super::intersect::NearestHit;
+use super::intersect::hit_object;
 use super::Statistics;
 use crate::geometry::Ray;
 use crate::number::Number;
@@ -29,8 +30,8 @@ pub(crate) fn nearest_secondary_hit<N: Number, C: Config<Number = N>>(
         // Objects come in order, so an equal t never replaces an earlier object.
         let interval = nearest.map_or(Interval::unbounded(), |best| Interval::below(best.t));
         statistics.secondary_tests += 1;
-        if let Some(hit) = object.primitive.intersect(&object.object_from_world.ray(ray), interval) {
-            nearest = Some(NearestHit { object: index, t: hit.t, local_normal: hit.normal });
+        if let Some(hit) = hit_object(scene, index, object, ray, || object.object_from_world.ray(ray), interval) {
+            nearest = Some(hit);
         }
     }
     nearest
@@ -49,8 +50,8 @@ fn nearest_in_grid<N: Number, C: Config<Number = N>>(scene: &Prepared<C>, ray: &
                     Some(best) => Interval { max: best.t, include_max: index < best.object },
                 };
                 statistics.secondary_tests += 1;
-                if let Some(hit) = object.primitive.intersect(&object.object_from_world.ray(ray), interval) {
-                    nearest = Some(NearestHit { object: index, t: hit.t, local_normal: hit.normal });
+                if let Some(hit) = hit_object(scene, index, object, ray, || object.object_from_world.ray(ray), interval) {
+                    nearest = Some(hit);
                 }
             }
         }

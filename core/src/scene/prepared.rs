@@ -26,6 +26,10 @@ use crate::scene::range::{self, RayOrigins};
 use crate::model::{Antialias, Description, ObjectDescription, Optimizations, Viewport, Window, MAX_LIGHTS};
 use crate::model::{Palette, Rgb4};
 use crate::shading::ShadingConstants;
+#[cfg(feature = "csg")]
+use crate::csg::{SolidNode, NO_SKIP};
+#[cfg(feature = "csg")]
+use crate::model::MAX_SOLID_NODES;
 
 /// Adaptive antialiasing as the render needs it (thesis fig 2.9): the image's viewport, the
 /// subdivision levels L and the threshold on an 8-bit channel's range over a square's corners.
@@ -120,6 +124,10 @@ pub struct Prepared<C: Config> {
     pub palette: Palette,
     /// What the optimizations derived from the objects' bounding volumes (§4.7).
     pub acceleration: Acceleration<C>,
+    /// Every solid's nodes, prepared (`csg::solid`): a solid object's `Primitive::Solid` range
+    /// indexes it as it indexes the description's.
+    #[cfg(feature = "csg")]
+    pub solid_nodes: Vec<SolidNode<C::Number>, MAX_SOLID_NODES>,
 }
 
 impl<C: Config> core::fmt::Debug for Prepared<C> {
@@ -166,6 +174,8 @@ impl<N: Number + 'static, const MAX_OBJECTS: usize, O: Objects<N> + 'static, con
             optimizations: Optimizations::NONE,
             palette: Palette { entries: [Rgb4 { r: 0, g: 0, b: 0 }; 256] },
             acceleration: Acceleration::UNSET,
+            #[cfg(feature = "csg")]
+            solid_nodes: Vec::new(),
         }
     }
 }
@@ -204,6 +214,8 @@ impl<N: Number, C: Config<Number = N>> Prepared<C> {
             optimizations: Optimizations::NONE,
             palette: Palette { entries: [Rgb4 { r: 0, g: 0, b: 0 }; 256] },
             acceleration: Acceleration::unset(count),
+            #[cfg(feature = "csg")]
+            solid_nodes: Vec::new(),
         }
     }
 }
@@ -302,23 +314,8 @@ where
             if !object.primitive.is_compiled() {
                 return Err(error(SceneErrorKind::PrimitiveNotCompiled { primitive: object.primitive.name() }));
             }
-            let inverse = object.world_from_object.affine_inverse().ok_or(error(SceneErrorKind::SingularTransform))?;
-            range::check_object::<N>(object, &inverse, &origins)?;
             let material = &object.material;
-            let object_from_world = AffineTransform::from_matrix(&inverse);
-            let prepared = Object {
-                primitive: object.primitive,
-                object_from_world,
-                material: PreparedMaterial {
-                    colour: material.colour & 15,
-                    ka: N::from_f64(material.ka),
-                    kd: N::from_f64(material.kd),
-                    ks: N::from_f64(material.ks),
-                    rnd: N::from_f64(material.rnd),
-                    power: libm::round(material.pwr.clamp(0.0, 1.0e6)) as u32,
-                    reflectance: material.cmy.map(|c| N::from_f64((1.0 - c).clamp(0.0, 1.0))),
-                },
-            };
+            let prepared = prepare_object::<N>(object, &origins)?;
             objects.push(prepared).map_err(|_| error(SceneErrorKind::TooManyObjects { capacity: C::MAX_OBJECTS }))?;
             #[cfg(feature = "ray-tree")]
             if spawns_rays {
@@ -335,6 +332,8 @@ where
                 return Err(error(SceneErrorKind::FeatureNotCompiled { feature: "ray-tree", statement }));
             }
         }
+        #[cfg(feature = "csg")]
+        self.prepare_solids(description, descriptions, &origins)?;
         self.place_eyes();
         self.acceleration.rebuild(&self.camera, description.optimizations, descriptions, Tuning::IMPROVED);
         #[cfg(feature = "ray-tree")]
@@ -343,6 +342,68 @@ where
             self.transparent = self.optics.iter().any(|optics| optics.transmit > N::ZERO);
         }
         Ok(())
+    }
+}
+
+/// One object (or a solid's leaf) in the number type: its inverse transform, checked against
+/// the type's range, and its material.
+fn prepare_object<N: Number>(object: &ObjectDescription, origins: &RayOrigins) -> Result<Object<N>, SceneError> {
+    let error = |kind| SceneError { line: object.line, kind };
+    let inverse = object.world_from_object.affine_inverse().ok_or(error(SceneErrorKind::SingularTransform))?;
+    range::check_object::<N>(object, &inverse, origins)?;
+    let material = &object.material;
+    Ok(Object {
+        primitive: object.primitive,
+        object_from_world: AffineTransform::from_matrix(&inverse),
+        material: PreparedMaterial {
+            colour: material.colour & 15,
+            ka: N::from_f64(material.ka),
+            kd: N::from_f64(material.kd),
+            ks: N::from_f64(material.ks),
+            rnd: N::from_f64(material.rnd),
+            power: libm::round(material.pwr.clamp(0.0, 1.0e6)) as u32,
+            reflectance: material.cmy.map(|c| N::from_f64((1.0 - c).clamp(0.0, 1.0))),
+        },
+    })
+}
+
+#[cfg(feature = "csg")]
+impl<N: Number, C: Config<Number = N>> Prepared<C> {
+    /// The solids' nodes in the number type, in the description's order, each solid's skips
+    /// linked (`csg::solid`).
+    fn prepare_solids<L>(&mut self, description: &Description<L>, descriptions: &[ObjectDescription], origins: &RayOrigins) -> Result<(), SceneError> {
+        self.solid_nodes.clear();
+        for node in &description.solids {
+            let prepared = match node {
+                crate::model::SolidNode::Leaf(leaf) => {
+                    if !leaf.primitive.is_compiled() {
+                        return Err(SceneError { line: leaf.line, kind: SceneErrorKind::PrimitiveNotCompiled { primitive: leaf.primitive.name() } });
+                    }
+                    SolidNode::Leaf { object: prepare_object::<N>(leaf, origins)?, skip_to: NO_SKIP }
+                }
+                crate::model::SolidNode::Combine { operation, .. } => SolidNode::Combine(*operation),
+            };
+            // Capacities are equal, so every node fits.
+            let _ = self.solid_nodes.push(prepared);
+        }
+        for object in descriptions {
+            if let crate::model::Primitive::Solid(range) = object.primitive {
+                let linked = self.solid_nodes.get_mut(range.nodes()).and_then(|nodes| crate::csg::solid::link_skips(nodes));
+                if linked.is_none() {
+                    return Err(SceneError { line: object.line, kind: SceneErrorKind::SolidTooComplex { what: "nodes in one tree", needs: usize::from(range.count), capacity: MAX_SOLID_NODES } });
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The nodes of a solid object (empty for any other).
+    #[inline]
+    pub fn solid(&self, primitive: crate::model::Primitive) -> &[SolidNode<N>] {
+        match primitive {
+            crate::model::Primitive::Solid(range) => self.solid_nodes.get(range.nodes()).unwrap_or(&[]),
+            _ => &[],
+        }
     }
 }
 

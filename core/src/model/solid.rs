@@ -1,0 +1,155 @@
+//! Solids of constructive solid geometry as written (thesis chapter 3, §3.2; the format's
+//! `union` / `intersection` / `difference` … `end`): a tree of primitives under the set
+//! operations of Table 3.1, kept as a list in post-order (each operand before the operation that
+//! combines it), so that a ray's spans are made by one pass with a stack and no recursion
+//! (`csg::solid`). An operation of more than two operands is written as a chain of binary ones:
+//! `difference A B C` is `(A − B) − C`.
+//!
+//! A solid is one object of the scene ([`Primitive::Solid`](super::Primitive::Solid)): to the
+//! optimizations it is its enclosure, a box (§3.3.6), and its operands are the scene's
+//! [`SolidNode`]s in the range it names.
+
+use super::object_description::ObjectDescription;
+use super::primitive::Primitive;
+
+/// The set operations of Table 3.1: a ray is in `A ∪ B` where it is in either, in `A ∩ B` where
+/// it is in both, in `A − B` where it is in `A` and not in `B`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Operation {
+    Union,
+    Intersection,
+    Difference,
+}
+
+impl Operation {
+    /// The keywords that open a solid, in the enum's order.
+    pub const ALL: [Operation; 3] = [Operation::Union, Operation::Intersection, Operation::Difference];
+
+    pub const fn name(self) -> &'static str {
+        match self {
+            Operation::Union => "union",
+            Operation::Intersection => "intersection",
+            Operation::Difference => "difference",
+        }
+    }
+
+    /// Whether a ray is in the result, from whether it is in each operand.
+    pub const fn inside(self, in_left: bool, in_right: bool) -> bool {
+        match self {
+            Operation::Union => in_left || in_right,
+            Operation::Intersection => in_left && in_right,
+            Operation::Difference => in_left && !in_right,
+        }
+    }
+
+    /// Whether the right operand can be skipped when the ray misses the left one (§3.3.7,
+    /// circumstance classification): for `∩` and `−` the result is then empty.
+    pub const fn left_decides_empty(self) -> bool {
+        !matches!(self, Operation::Union)
+    }
+
+    /// The most spans a ray can have in the result, given the most in each operand: a union or
+    /// a difference may add one span per span of the right operand, an intersection one fewer.
+    pub const fn spans_bound(self, left: usize, right: usize) -> usize {
+        match self {
+            Operation::Intersection => {
+                let sum = left + right;
+                if sum == 0 {
+                    0
+                } else {
+                    sum - 1
+                }
+            }
+            Operation::Union | Operation::Difference => left + right,
+        }
+    }
+}
+
+/// The most nodes (primitives and operations) all of a scene's solids hold together.
+pub const MAX_SOLID_NODES: usize = 64;
+/// The most spans a ray may have in a solid or any part of it: each span list is this long.
+pub const MAX_SPANS: usize = 8;
+/// The most span lists the post-order walk keeps at once (the deepest chain of right operands,
+/// plus one).
+pub const MAX_SOLID_STACK: usize = 8;
+
+/// One node of a solid's tree in post-order (a list of them lives in the description, so the
+/// size of the larger variant costs nothing per node beyond the list's).
+#[allow(clippy::large_enum_variant)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum SolidNode {
+    /// A primitive operand: its transform (with every enclosing solid's composed on top) and
+    /// its material (its own if it set one, else the nearest enclosing solid's).
+    Leaf(ObjectDescription),
+    /// Combines the two results before it: the left operand's, then the right one's.
+    Combine { operation: Operation, line: u32 },
+}
+
+/// What a tree needs to be walked: the most spans along a ray at its root and in any part, and
+/// the most span lists the walk holds at once.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub struct SolidNeeds {
+    pub spans: usize,
+    pub stack: usize,
+}
+
+/// [`SolidNeeds`] of the post-order `nodes` (one solid's), and the box (in world space, as each
+/// leaf's transform says) that encloses the solid: the union of the operands' boxes for `∪`,
+/// their intersection for `∩`, the left one's for `−` (§3.3.6). `None` if the list is not one
+/// whole tree.
+pub fn solid_needs_and_box(nodes: &[SolidNode]) -> Option<(SolidNeeds, [[f64; 3]; 2])> {
+    // (spans, box) of each result the walk holds.
+    let mut stack: heapless::Vec<(usize, [[f64; 3]; 2]), MAX_SOLID_NODES> = heapless::Vec::new();
+    let mut needs = SolidNeeds::default();
+    for node in nodes {
+        match node {
+            SolidNode::Leaf(leaf) => {
+                let spans = if matches!(leaf.primitive, Primitive::Torus(_)) { 2 } else { 1 };
+                stack.push((spans, leaf.world_box())).ok()?;
+            }
+            SolidNode::Combine { operation, .. } => {
+                let (right_spans, right) = stack.pop()?;
+                let (left_spans, left) = stack.pop()?;
+                let spans = operation.spans_bound(left_spans, right_spans);
+                let enclosure = match operation {
+                    Operation::Union => [min3(left[0], right[0]), max3(left[1], right[1])],
+                    Operation::Intersection => [max3(left[0], right[0]), min3(left[1], right[1])],
+                    Operation::Difference => left,
+                };
+                stack.push((spans, enclosure)).ok()?;
+            }
+        }
+        needs.spans = needs.spans.max(stack.last().map_or(0, |top| top.0));
+        needs.stack = needs.stack.max(stack.len());
+    }
+    match stack.as_slice() {
+        [(_, enclosure)] => Some((needs, *enclosure)),
+        _ => None,
+    }
+}
+
+fn min3(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[0].min(b[0]), a[1].min(b[1]), a[2].min(b[2])]
+}
+
+fn max3(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[0].max(b[0]), a[1].max(b[1]), a[2].max(b[2])]
+}
+
+impl ObjectDescription {
+    /// The world-space box around the object: its primitive's own box through its transform.
+    pub fn world_box(&self) -> [[f64; 3]; 2] {
+        let [low, high] = self.primitive.local_box();
+        let mut enclosure = [[f64::INFINITY; 3], [f64::NEG_INFINITY; 3]];
+        for corner in 0..8 {
+            let p = [
+                if corner & 1 == 0 { low[0] } else { high[0] },
+                if corner & 2 == 0 { low[1] } else { high[1] },
+                if corner & 4 == 0 { low[2] } else { high[2] },
+            ];
+            let world = self.world_from_object.transform_point(p);
+            enclosure = [min3(enclosure[0], world), max3(enclosure[1], world)];
+        }
+        enclosure
+    }
+}

@@ -1,0 +1,79 @@
+//! A ray against one object of the scene: a primitive in its own space (`shapes`), or a solid
+//! through its operands' spans (`csg::solid`, thesis §3.3). Every ray of the render (primary,
+//! shadow, secondary) meets objects here, so a solid is a solid to each of them.
+
+use crate::config::Config;
+use crate::geometry::{Ray, Vector3};
+use crate::model::Object;
+use crate::number::Number;
+use crate::scene::Prepared;
+use crate::shapes::Interval;
+
+/// A ray's nearest hit on an object of the scene.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct NearestHit<N> {
+    pub object: usize,
+    pub t: N,
+    /// Object-space normal, not normalised (for a solid, in the space of the leaf hit).
+    pub local_normal: Vector3<N>,
+    /// For a solid, the leaf whose surface was hit (its place among the solid's nodes); else
+    /// `NO_LEAF`.
+    #[cfg(feature = "csg")]
+    pub leaf: u16,
+}
+
+/// The surface a hit is on when it is not a solid's leaf.
+#[cfg(feature = "csg")]
+pub const NO_LEAF: u16 = u16::MAX;
+
+/// The nearest hit on `object` (number `index`) inside `interval`: `world` is the ray, `local`
+/// makes it in the object's space (a primitive's; a solid works from `world`).
+#[inline(always)]
+pub(crate) fn hit_object<N: Number, C: Config<Number = N>>(
+    scene: &Prepared<C>,
+    index: usize,
+    object: &Object<N>,
+    world: &Ray<N>,
+    local: impl FnOnce() -> Ray<N>,
+    interval: Interval<N>,
+) -> Option<NearestHit<N>> {
+    #[cfg(feature = "csg")]
+    if let crate::model::Primitive::Solid(_) = object.primitive {
+        let hit = crate::csg::first_hit(scene.solid(object.primitive), world, interval)?;
+        return Some(NearestHit { object: index, t: hit.t, local_normal: hit.normal, leaf: hit.leaf });
+    }
+    #[cfg(not(feature = "csg"))]
+    let _ = (scene, world);
+    let hit = object.primitive.intersect(&local(), interval)?;
+    Some(NearestHit {
+        object: index,
+        t: hit.t,
+        local_normal: hit.normal,
+        #[cfg(feature = "csg")]
+        leaf: NO_LEAF,
+    })
+}
+
+/// Whether `object` blocks the ray anywhere inside `interval` (a shadow ray).
+#[inline(always)]
+pub(crate) fn object_occludes<N: Number, C: Config<Number = N>>(scene: &Prepared<C>, object: &Object<N>, world: &Ray<N>, interval: Interval<N>) -> bool {
+    #[cfg(feature = "csg")]
+    if let crate::model::Primitive::Solid(_) = object.primitive {
+        return crate::csg::occluded(scene.solid(object.primitive), world, interval);
+    }
+    #[cfg(not(feature = "csg"))]
+    let _ = scene;
+    object.primitive.occluded(&object.object_from_world.ray(world), interval)
+}
+
+/// The object whose transform and material the hit's surface has: the object hit, or for a
+/// solid the leaf whose surface it is.
+#[inline(always)]
+pub(crate) fn surface_of<'a, N: Number, C: Config<Number = N>>(scene: &'a Prepared<C>, hit: &NearestHit<N>) -> Option<&'a Object<N>> {
+    let object = scene.objects.get(hit.object)?;
+    #[cfg(feature = "csg")]
+    if let Some(crate::csg::SolidNode::Leaf { object: leaf, .. }) = scene.solid(object.primitive).get(usize::from(hit.leaf)) {
+        return Some(leaf);
+    }
+    Some(object)
+}
