@@ -387,3 +387,89 @@ fn acceleration_memory_is_bounded() {
     assert!(per_object <= 450.0, "{per_object} bytes per object");
     assert!(fixed <= 1024.0, "{fixed} bytes per scene");
 }
+
+/// The CSG scenes (scenes/csg/): a solid is one object to the optimizations, through the box
+/// that encloses it (§3.3.6), so every combination gives the unoptimized image, in every type.
+#[test]
+fn csg_scenes_at_132x120_render_identically_under_every_combination() {
+    for name in ["csg/die.mts", "csg/lens.mts", "csg/cup.mts", "csg/nut.mts"] {
+        let mut scene = load(name);
+        scene.fit_to_size(132, 120);
+        let (all, none) = all_combinations_match::<f64>(&scene, false, name);
+        println!("{name}: {} tests all-on against {} with none", all.ro_tests, none.ro_tests);
+        assert!(all.ro_tests < none.ro_tests, "{name}: the optimizations skip nothing");
+        all_combinations_match::<f64>(&scene, true, name);
+        all_combinations_match::<f32>(&scene, false, name);
+        all_combinations_match::<Fixed>(&scene, false, name);
+        all_combinations_match::<microtrace::number::SoftFloat>(&scene, false, name);
+    }
+}
+
+/// A random scene whose first objects become solids: each the first object's primitive with
+/// one to three more near it under random operations (nested when there are three), so that
+/// their boxes overlap, touch, nest or miss.
+fn random_solid_scene(seed: u64) -> SceneDescription<CAPACITY> {
+    use microtrace::model::{enclosing_transform, Operation, SolidNode, SolidRange};
+    let mut scene = random_scene(seed);
+    let mut rng = XorShift(seed.wrapping_mul(0x2545_F491_4F6C_DD1D) | 1);
+    let solids = 1 + rng.below(2) as usize;
+    for index in 0..solids.min(scene.objects.len()) {
+        let first = scene.solids.len();
+        let base = scene.objects[index];
+        let half = (scene.window.x2 - scene.window.x1) / 2.0;
+        let centre = base.world_from_object.transform_point([0.5; 3]);
+        scene.solids.push(SolidNode::Leaf(base)).unwrap();
+        let operands = 1 + rng.below(3) as usize;
+        let operations = [Operation::Union, Operation::Intersection, Operation::Difference];
+        for operand in 0..operands {
+            let primitive = match Primitive::ALL[rng.below(Primitive::ALL.len() as u64) as usize] {
+                Primitive::Torus(_) => Primitive::Torus(Tube::from_f64(rng.range(0.1, 0.9)).unwrap()),
+                other => other,
+            };
+            let mut leaf = ObjectDescription::new(primitive, base.line);
+            let centre = centre.map(|c| c + rng.range(-0.3 * half, 0.3 * half));
+            let size = half * rng.range(0.2, 1.0);
+            leaf.world_from_object = random_matrix(&mut rng, centre, size);
+            // Some operands keep the solid's material, others have their own.
+            if rng.below(2) == 0 {
+                leaf.material.colour = rng.below(16) as u8;
+            } else {
+                leaf.material = base.material;
+            }
+            scene.solids.push(SolidNode::Leaf(leaf)).unwrap();
+            // Two operands after the first: the last two nest under their own operation.
+            if operands == 3 && operand == 1 {
+                continue;
+            }
+            if operands == 3 && operand == 2 {
+                scene.solids.push(SolidNode::Combine { operation: operations[rng.below(3) as usize], line: 0 }).unwrap();
+            }
+            scene.solids.push(SolidNode::Combine { operation: operations[rng.below(3) as usize], line: 0 }).unwrap();
+        }
+        let range = SolidRange { first: first as u16, count: (scene.solids.len() - first) as u16 };
+        let object = &mut scene.objects[index];
+        object.primitive = Primitive::Solid(range);
+        object.world_from_object = enclosing_transform(&scene.solids[range.nodes()], object.line).unwrap();
+    }
+    scene
+}
+
+#[test]
+fn random_solid_scenes_render_identically_under_every_combination() {
+    let (mut tests_all, mut tests_none) = (0u64, 0u64);
+    let seeds = std::env::var("MICROTRACE_SEEDS").ok().and_then(|text| text.parse().ok()).unwrap_or(300u64) / 2;
+    for seed in 0..seeds {
+        let scene = random_solid_scene(seed);
+        let label = format!("random solid scene seed {seed}");
+        let rgb = seed % 2 == 1;
+        let (all, none) = all_combinations_match::<f64>(&scene, rgb, &label);
+        all_combinations_match::<f32>(&scene, !rgb, &label);
+        if seed % 4 == 0 && Scene::<Fixed, CAPACITY>::prepare(&scene).is_ok() {
+            all_combinations_match::<Fixed>(&scene, rgb, &label);
+        }
+        tests_all += all.ro_tests;
+        tests_none += none.ro_tests;
+    }
+    println!("{seeds} random solid scenes: {tests_all} tests all-on against {tests_none} with none");
+    assert!(tests_all < tests_none, "the optimizations never skip anything");
+}

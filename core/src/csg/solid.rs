@@ -117,3 +117,42 @@ pub fn link_skips<N>(nodes: &mut [SolidNode<N>]) -> Option<()> {
     }
     Some(())
 }
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use std::vec::Vec;
+
+    use super::*;
+    use crate::model::SolidRange;
+    use crate::parser::parse;
+    use crate::scene::Scene;
+
+    /// The spans (enter, exit) of a ray in the first object of `text`, a solid.
+    fn spans_of(text: &str, origin: [f64; 3], direction: [f64; 3]) -> Vec<(f64, f64)> {
+        let description = parse::<4>(text.as_bytes()).unwrap();
+        let scene = Scene::<f64, 4>::prepare(&description).unwrap();
+        let nodes = scene.solid(scene.objects[0].primitive);
+        assert!(matches!(scene.objects[0].primitive, crate::model::Primitive::Solid(SolidRange { first: 0, .. })));
+        let ray = Ray { origin: Vector3::from_f64(origin), direction: Vector3::from_f64(direction) };
+        solid_spans(nodes, &ray).unwrap().iter().map(|span| (span.enter.t, span.exit.t)).collect()
+    }
+
+    #[test]
+    fn a_lens_is_where_both_spheres_are() {
+        let lens = "intersection\n sphere\n  scale 60 60 60\n  translate 0 0 -50\n sphere\n  scale 60 60 60\n  translate 0 0 50\nend\n";
+        let found = spans_of(lens, [0.0, 0.0, 100.0], [0.0, 0.0, -1.0]);
+        assert_eq!(found.len(), 1, "{found:?}");
+        assert!((found[0].0 - 90.0).abs() < 1e-9 && (found[0].1 - 110.0).abs() < 1e-9, "{found:?}");
+        // Off the axis beyond the lens's rim (radius √(60² − 50²) = 33.2): nothing.
+        assert!(spans_of(lens, [40.0, 0.0, 100.0], [0.0, 0.0, -1.0]).is_empty());
+    }
+
+    #[test]
+    fn a_difference_leaves_a_hole() {
+        let drilled = "difference\n cube\n  scale 10 10 10\n cylinder\n  scale 2 2 20\n  translate 5 5 -5\nend\n";
+        let found = spans_of(drilled, [-5.0, 5.0, 5.0], [1.0, 0.0, 0.0]);
+        assert_eq!(found, [(5.0, 8.0), (12.0, 15.0)]);
+        assert!(spans_of(drilled, [5.0, 5.0, 50.0], [0.0, 0.0, -1.0]).is_empty());
+    }
+}

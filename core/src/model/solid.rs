@@ -11,6 +11,8 @@
 
 use super::object_description::ObjectDescription;
 use super::primitive::Primitive;
+use super::{SceneError, SceneErrorKind};
+use crate::geometry::Matrix4;
 
 /// The set operations of Table 3.1: a ray is in `A ∪ B` where it is in either, in `A ∩ B` where
 /// it is in both, in `A − B` where it is in `A` and not in `B`.
@@ -152,4 +154,47 @@ impl ObjectDescription {
         }
         enclosure
     }
+}
+
+/// The transform that makes the unit cube the box enclosing the solid whose post-order nodes are
+/// `nodes` (its object's `world_from_object`, §3.3.6), once every leaf's transform is final:
+/// each leaf must be invertible (an error names its line) and the tree must fit the walk's
+/// capacities (an error names `line`, the solid's).
+pub fn enclosing_transform(nodes: &[SolidNode], line: u32) -> Result<Matrix4, SceneError> {
+    for node in nodes {
+        if let SolidNode::Leaf(leaf) = node {
+            if leaf.world_from_object.affine_inverse().is_none() {
+                return Err(SceneError::new(leaf.line, SceneErrorKind::SingularTransform));
+            }
+        }
+    }
+    let error = |kind| SceneError::new(line, kind);
+    let (needs, enclosure) = solid_needs_and_box(nodes).ok_or(error(SceneErrorKind::SingularTransform))?;
+    if needs.spans > MAX_SPANS {
+        return Err(error(SceneErrorKind::SolidTooComplex { what: "spans along a ray", needs: needs.spans, capacity: MAX_SPANS }));
+    }
+    if needs.stack > MAX_SOLID_STACK {
+        return Err(error(SceneErrorKind::SolidTooComplex { what: "span lists held at once by the walk", needs: needs.stack, capacity: MAX_SOLID_STACK }));
+    }
+    // An empty enclosure (operands whose boxes do not meet) leaves nothing to see; the union of
+    // the leaves' boxes still bounds it and keeps the transform invertible.
+    let enclosure = if (0..3).all(|axis| enclosure[1][axis] > enclosure[0][axis]) {
+        enclosure
+    } else {
+        nodes.iter().filter_map(|node| if let SolidNode::Leaf(leaf) = node { Some(leaf.world_box()) } else { None }).fold(
+            [[f64::INFINITY; 3], [f64::NEG_INFINITY; 3]],
+            |[low, high], [a, b]| [min3(low, a), max3(high, b)],
+        )
+    };
+    let size: [f64; 3] = core::array::from_fn(|axis| enclosure[1][axis] - enclosure[0][axis]);
+    let mut world_from_box = Matrix4::IDENTITY;
+    if size.iter().any(|extent| !(*extent > 0.0 && extent.is_finite())) {
+        return Err(error(SceneErrorKind::SingularTransform));
+    }
+    world_from_box.scale(size);
+    world_from_box.translate(enclosure[0]);
+    if world_from_box.affine_inverse().is_none() {
+        return Err(error(SceneErrorKind::SingularTransform));
+    }
+    Ok(world_from_box)
 }

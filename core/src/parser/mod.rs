@@ -47,7 +47,7 @@ mod tests;
 use crate::storage::List;
 use crate::model::{SceneError, SceneErrorKind, Token};
 use crate::model::{Antialias, Light, LightSource, Description, ObjectDescription, Optimizations, Primitive, Projection, Tube, SceneDescription, Viewport, Window, MAX_DEPTH, MAX_LIGHTS};
-use crate::model::{solid_needs_and_box, Operation, SolidNode, SolidRange, MAX_SOLID_NODES, MAX_SOLID_STACK, MAX_SPANS};
+use crate::model::{enclosing_transform, Operation, SolidNode, SolidRange, MAX_SOLID_NODES};
 use crate::model::Rgb4;
 
 /// The most arguments any fixed-arity statement takes (`group N R G B up`).
@@ -150,42 +150,7 @@ fn finish_object<L: List<ObjectDescription>>(scene: &mut Description<L>, solids:
         return Ok(());
     }
     let nodes = scene.solids.get(range.nodes()).unwrap_or(&[]);
-    for node in nodes {
-        if let SolidNode::Leaf(leaf) = node {
-            if leaf.world_from_object.affine_inverse().is_none() {
-                return Err(SceneError::new(leaf.line, SceneErrorKind::SingularTransform));
-            }
-        }
-    }
-    let error = |kind| SceneError::new(object.line, kind);
-    let (needs, enclosure) = solid_needs_and_box(nodes).ok_or(error(SceneErrorKind::SingularTransform))?;
-    if needs.spans > MAX_SPANS {
-        return Err(error(SceneErrorKind::SolidTooComplex { what: "spans along a ray", needs: needs.spans, capacity: MAX_SPANS }));
-    }
-    if needs.stack > MAX_SOLID_STACK {
-        return Err(error(SceneErrorKind::SolidTooComplex { what: "span lists held at once by the walk", needs: needs.stack, capacity: MAX_SOLID_STACK }));
-    }
-    // An empty enclosure (operands whose boxes do not meet) leaves nothing to see; the union of
-    // the leaves' boxes still bounds it and keeps the transform invertible.
-    let enclosure = if (0..3).all(|axis| enclosure[1][axis] > enclosure[0][axis]) {
-        enclosure
-    } else {
-        nodes.iter().filter_map(|node| if let SolidNode::Leaf(leaf) = node { Some(leaf.world_box()) } else { None }).fold(
-            [[f64::INFINITY; 3], [f64::NEG_INFINITY; 3]],
-            |[low, high], [a, b]| [core::array::from_fn(|i| low[i].min(a[i])), core::array::from_fn(|i| high[i].max(b[i]))],
-        )
-    };
-    let size: [f64; 3] = core::array::from_fn(|axis| enclosure[1][axis] - enclosure[0][axis]);
-    let mut world_from_box = crate::geometry::Matrix4::IDENTITY;
-    if size.iter().any(|extent| !(*extent > 0.0 && extent.is_finite())) {
-        return Err(error(SceneErrorKind::SingularTransform));
-    }
-    world_from_box.scale(size);
-    world_from_box.translate(enclosure[0]);
-    if world_from_box.affine_inverse().is_none() {
-        return Err(error(SceneErrorKind::SingularTransform));
-    }
-    object.world_from_object = world_from_box;
+    object.world_from_object = enclosing_transform(nodes, object.line)?;
     Ok(())
 }
 
