@@ -109,7 +109,7 @@ impl Primitive {
             Primitive::Cylinder => "cylinder",
             Primitive::Cone => "cone",
             Primitive::Torus(_) => "torus",
-            Primitive::Solid(_) => "a solid (union, intersection, difference)",
+            Primitive::Solid(_) => "solid",
         }
     }
 
