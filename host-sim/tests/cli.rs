@@ -54,7 +54,7 @@ fn stats_json_has_exactly_the_table_keys() {
     let keys: Vec<&str> = json.split('"').skip(1).step_by(2).collect();
     assert_eq!(
         keys,
-        ["pixels", "rays_traced", "rays_intersected", "ro_tests", "ro_hits", "shadow_rays", "shadow_tests", "preprocess_ms", "trace_ms"]
+        ["pixels", "rays_traced", "rays_intersected", "ro_tests", "ro_hits", "shadow_rays", "shadow_tests", "solid_leaf_tests", "preprocess_ms", "trace_ms"]
     );
     assert!(json.contains("\"pixels\": 2256,"), "{json}");
 }

@@ -37,10 +37,10 @@ pub struct SolidHit<N> {
     pub leaf: u16,
 }
 
-/// The spans of the ray (world space) in the solid whose post-order nodes are `nodes`. `None`
-/// when a list or the stack would overflow (preparation rules that out) or the list is not a
-/// tree.
-pub fn solid_spans<N: Number>(nodes: &[SolidNode<N>], ray: &Ray<N>) -> Option<Spans<N, MAX_SPANS>> {
+/// The spans of the ray (world space) in the solid whose post-order nodes are `nodes`, adding
+/// the primitives tested to `leaf_tests`. `None` when a list or the stack would overflow
+/// (preparation rules that out) or the list is not a tree.
+pub fn solid_spans<N: Number>(nodes: &[SolidNode<N>], ray: &Ray<N>, leaf_tests: &mut u64) -> Option<Spans<N, MAX_SPANS>> {
     let mut stack: Vec<Spans<N, MAX_SPANS>, MAX_SOLID_STACK> = Vec::new();
     let mut index = 0;
     while let Some(node) = nodes.get(index) {
@@ -52,6 +52,7 @@ pub fn solid_spans<N: Number>(nodes: &[SolidNode<N>], ray: &Ray<N>) -> Option<Sp
                     index = usize::from(*skip_to);
                     continue;
                 }
+                *leaf_tests += 1;
                 let local = object.object_from_world.ray(ray);
                 let spans = leaf_spans(object.primitive, &local, index as u16).ok()?;
                 stack.push(Spans::widened(&spans)?).ok()?;
@@ -73,16 +74,16 @@ pub fn solid_spans<N: Number>(nodes: &[SolidNode<N>], ray: &Ray<N>) -> Option<Sp
 
 /// The first boundary of the solid's spans inside `interval`: the ray enters the solid there,
 /// or (from inside) leaves it.
-pub fn first_hit<N: Number>(nodes: &[SolidNode<N>], ray: &Ray<N>, interval: Interval<N>) -> Option<SolidHit<N>> {
-    let spans = solid_spans(nodes, ray)?;
+pub fn first_hit<N: Number>(nodes: &[SolidNode<N>], ray: &Ray<N>, interval: Interval<N>, leaf_tests: &mut u64) -> Option<SolidHit<N>> {
+    let spans = solid_spans(nodes, ray, leaf_tests)?;
     let boundary = spans.iter().flat_map(|span| [span.enter, span.exit]).find(|boundary| interval.contains(boundary.t))?;
     Some(surface(&boundary))
 }
 
 /// Whether any boundary of the solid lies inside `interval` (a shadow ray is blocked by the
 /// first one it meets).
-pub fn occluded<N: Number>(nodes: &[SolidNode<N>], ray: &Ray<N>, interval: Interval<N>) -> bool {
-    solid_spans(nodes, ray).is_some_and(|spans| spans.iter().any(|span| interval.contains(span.enter.t) || interval.contains(span.exit.t)))
+pub fn occluded<N: Number>(nodes: &[SolidNode<N>], ray: &Ray<N>, interval: Interval<N>, leaf_tests: &mut u64) -> bool {
+    solid_spans(nodes, ray, leaf_tests).is_some_and(|spans| spans.iter().any(|span| interval.contains(span.enter.t) || interval.contains(span.exit.t)))
 }
 
 fn surface<N: Number>(boundary: &Boundary<N>) -> SolidHit<N> {
@@ -135,7 +136,7 @@ mod tests {
         let nodes = scene.solid(scene.objects[0].primitive);
         assert!(matches!(scene.objects[0].primitive, crate::model::Primitive::Solid(SolidRange { first: 0, .. })));
         let ray = Ray { origin: Vector3::from_f64(origin), direction: Vector3::from_f64(direction) };
-        solid_spans(nodes, &ray).unwrap().iter().map(|span| (span.enter.t, span.exit.t)).collect()
+        solid_spans(nodes, &ray, &mut 0).unwrap().iter().map(|span| (span.enter.t, span.exit.t)).collect()
     }
 
     #[test]

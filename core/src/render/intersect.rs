@@ -2,6 +2,7 @@
 //! through its operands' spans (`csg::solid`, thesis §3.3). Every ray of the render (primary,
 //! shadow, secondary) meets objects here, so a solid is a solid to each of them.
 
+use super::Statistics;
 use crate::config::Config;
 use crate::geometry::{Ray, Vector3};
 use crate::model::Object;
@@ -36,14 +37,15 @@ pub(crate) fn hit_object<N: Number, C: Config<Number = N>>(
     world: &Ray<N>,
     local: impl FnOnce() -> Ray<N>,
     interval: Interval<N>,
+    statistics: &mut Statistics,
 ) -> Option<NearestHit<N>> {
     #[cfg(feature = "csg")]
     if let crate::model::Primitive::Solid(_) = object.primitive {
-        let hit = crate::csg::first_hit(scene.solid(object.primitive), world, interval)?;
+        let hit = crate::csg::first_hit(scene.solid(object.primitive), world, interval, &mut statistics.solid_leaf_tests)?;
         return Some(NearestHit { object: index, t: hit.t, local_normal: hit.normal, leaf: hit.leaf });
     }
     #[cfg(not(feature = "csg"))]
-    let _ = (scene, world);
+    let _ = (scene, world, statistics);
     let hit = object.primitive.intersect(&local(), interval)?;
     Some(NearestHit {
         object: index,
@@ -56,13 +58,13 @@ pub(crate) fn hit_object<N: Number, C: Config<Number = N>>(
 
 /// Whether `object` blocks the ray anywhere inside `interval` (a shadow ray).
 #[inline(always)]
-pub(crate) fn object_occludes<N: Number, C: Config<Number = N>>(scene: &Prepared<C>, object: &Object<N>, world: &Ray<N>, interval: Interval<N>) -> bool {
+pub(crate) fn object_occludes<N: Number, C: Config<Number = N>>(scene: &Prepared<C>, object: &Object<N>, world: &Ray<N>, interval: Interval<N>, statistics: &mut Statistics) -> bool {
     #[cfg(feature = "csg")]
     if let crate::model::Primitive::Solid(_) = object.primitive {
-        return crate::csg::occluded(scene.solid(object.primitive), world, interval);
+        return crate::csg::occluded(scene.solid(object.primitive), world, interval, &mut statistics.solid_leaf_tests);
     }
     #[cfg(not(feature = "csg"))]
-    let _ = scene;
+    let _ = (scene, statistics);
     object.primitive.occluded(&object.object_from_world.ray(world), interval)
 }
 

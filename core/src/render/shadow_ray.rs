@@ -297,7 +297,7 @@ impl<N: Number> ShadowSegment<N> {
     fn meets<C: Config<Number = N>>(&self, scene: &Prepared<C>, index: usize, statistics: &mut Statistics) -> bool {
         let Some(object) = scene.objects.get(index) else { return false };
         statistics.shadow_tests += 1;
-        super::intersect::object_occludes(scene, object, &self.ray, self.interval)
+        super::intersect::object_occludes(scene, object, &self.ray, self.interval, statistics)
     }
 }
 

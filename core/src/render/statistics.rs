@@ -22,6 +22,9 @@ pub struct Statistics {
     pub secondary_rays: [u64; 7],
     /// Secondary ray–object tests (after the bounding spheres).
     pub secondary_tests: u64,
+    /// The primitives tested inside solids, by rays of every kind (a solid's test counts once
+    /// above, however many of its operands it tests; circumstance classification skips some).
+    pub solid_leaf_tests: u64,
 }
 
 impl Statistics {
@@ -44,5 +47,6 @@ impl Statistics {
             *mine += theirs;
         }
         self.secondary_tests += other.secondary_tests;
+        self.solid_leaf_tests += other.solid_leaf_tests;
     }
 }

@@ -199,7 +199,7 @@ pub fn statistics_json(rendered: &Rendered) -> String {
     };
     format!(
         "{{\"pixels\": {}, \"rays_traced\": {}, \"rays_intersected\": {}, \"ro_tests\": {}, \"ro_hits\": {}, \
-         \"shadow_rays\": {}, \"shadow_tests\": {}, \"preprocess_ms\": {:.3}, \"trace_ms\": {:.3}{passes}}}\n",
+         \"shadow_rays\": {}, \"shadow_tests\": {}, \"solid_leaf_tests\": {}, \"preprocess_ms\": {:.3}, \"trace_ms\": {:.3}{passes}}}\n",
         s.pixels,
         s.rays_traced,
         s.rays_intersected,
@@ -207,6 +207,7 @@ pub fn statistics_json(rendered: &Rendered) -> String {
         s.ro_hits,
         s.shadow_rays,
         s.shadow_tests,
+        s.solid_leaf_tests,
         rendered.preprocess.as_secs_f64() * 1e3,
         rendered.trace.as_secs_f64() * 1e3,
     )
@@ -247,6 +248,10 @@ fn thesis_table(rendered: &Rendered) -> String {
         s.shadow_tests,
         per(s.shadow_tests, s.shadow_rays),
     );
+    // Solids (chapter 3): the primitives their tests met inside them.
+    if s.solid_leaf_tests > 0 {
+        table.push_str(&format!("solid leaf tests  {} (primitives tested inside solids, by every kind of ray)\n", s.solid_leaf_tests));
+    }
     // Antialiasing traces more than one ray a pixel (chapter 5).
     if s.rays_traced > s.pixels {
         table.push_str(&format!("rays per pixel    {:.2}\n", per(s.rays_traced, s.pixels)));

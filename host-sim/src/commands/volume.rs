@@ -81,7 +81,7 @@ pub fn object_volume(object: &ObjectDescription, nodes: &[SolidNode<f64>], size:
             let y = low[1] + (row as f64 + 0.5) * height;
             let world = Ray { origin: Vector3::new(x, y, start_z), direction: Vector3::new(0.0, 0.0, -1.0) };
             let spans: Spans<f64, MAX_SPANS> = match object.primitive {
-                Primitive::Solid(_) => solid_spans(nodes, &world).context("the solid's spans overflow their capacity")?,
+                Primitive::Solid(_) => solid_spans(nodes, &world, &mut 0).context("the solid's spans overflow their capacity")?,
                 primitive => microtrace::csg::leaf_spans(primitive, &object_from_world.ray(&world), 0)
                     .ok()
                     .and_then(|spans| Spans::widened(&spans))
