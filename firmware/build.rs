@@ -329,16 +329,26 @@ fn check_primitives<const N: usize>(description: &SceneDescription<N>, scene_pat
     for primitive in Primitive::ALL {
         let feature = format!("CARGO_FEATURE_{}", primitive.name().to_uppercase());
         let enabled = env(&feature).is_some();
-        if let Some(object) = description.objects.iter().find(|object| object.primitive.index() == primitive.index()) {
+        if let Some((_, line)) = description.primitives().find(|(used, _)| used.index() == primitive.index()) {
             if !enabled {
                 fail(&format!(
-                    "{}:line {}: the scene uses a {name} but the firmware was built without the `{name}` feature; \
+                    "{}:line {line}: the scene uses a {name} but the firmware was built without the `{name}` feature; \
                      enable it (`cargo xtask firmware` picks the features from the scene)",
                     scene_path.display(),
-                    object.line,
                     name = primitive.name()
                 ));
             }
+        }
+    }
+    // Solids likewise (constructive solid geometry, thesis chapter 3).
+    if let Some(solid) = description.objects.iter().find(|object| matches!(object.primitive, Primitive::Solid(_))) {
+        if env("CARGO_FEATURE_CSG").is_none() {
+            fail(&format!(
+                "{}:line {}: the scene has a solid but the firmware was built without the `csg` feature; \
+                 enable it (`cargo xtask firmware` picks the features from the scene)",
+                scene_path.display(),
+                solid.line
+            ));
         }
     }
     // Antialiasing likewise (chapter 5).

@@ -13,7 +13,7 @@
 use core::fmt::Debug;
 use core::marker::PhantomData;
 
-use crate::model::{Object, Objects, MAX_DEPTH, MAX_LIGHTS};
+use crate::model::{Object, Objects, PreparedSolidNode, MAX_DEPTH, MAX_LIGHTS, MAX_SOLID_NODES};
 use crate::number::Number;
 use crate::storage::{Index, List, Table};
 
@@ -25,6 +25,9 @@ pub trait Config: 'static {
     type Index: Index;
     /// Where the prepared objects live (the scene's own list, or the firmware's in flash).
     type Objects: Objects<Self::Number>;
+    /// Where the solids' prepared nodes live (the scene's own list, or the firmware's in flash,
+    /// exactly its scene's).
+    type Solids: core::ops::Deref<Target = [PreparedSolidNode<Self::Number>]> + Default;
     /// One `T` per object.
     type PerObject<T: Copy>: Table<T>;
     /// One `T` per object for each light after the first ([`MAX_LIGHTS`]` − 1` tables of
@@ -75,7 +78,8 @@ pub const DEFAULT_ANTIALIAS_ROW: usize = 2049;
 
 /// Every table an array of a capacity fixed at compile time: `K` objects (kept in `O`),
 /// `POOL` grid entries per object, a ray tree `DEPTH` deep and antialiasing rows of `ROW`
-/// corners. The firmware's scene is one (sized by its scene), and so are the tests'.
+/// corners, the solids' nodes in `S`. The firmware's scene is one (sized by its scene), and so
+/// are the tests'.
 pub struct Arrays<
     N,
     const K: usize,
@@ -83,22 +87,25 @@ pub struct Arrays<
     const POOL: usize = DEFAULT_GRID_ENTRIES_PER_OBJECT,
     const DEPTH: usize = DEFAULT_TREE_DEPTH,
     const ROW: usize = DEFAULT_ANTIALIAS_ROW,
->(PhantomData<(N, O)>);
+    S = heapless::Vec<PreparedSolidNode<N>, MAX_SOLID_NODES>,
+>(PhantomData<(N, O, S)>);
 
-impl<N, const K: usize, O, const POOL: usize, const DEPTH: usize, const ROW: usize> Debug for Arrays<N, K, O, POOL, DEPTH, ROW> {
+impl<N, const K: usize, O, const POOL: usize, const DEPTH: usize, const ROW: usize, S> Debug for Arrays<N, K, O, POOL, DEPTH, ROW, S> {
     fn fmt(&self, formatter: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         write!(formatter, "Arrays<{K} objects, {POOL} grid entries each, depth {DEPTH}, row {ROW}>")
     }
 }
 
-impl<N, const K: usize, O, const POOL: usize, const DEPTH: usize, const ROW: usize> Config for Arrays<N, K, O, POOL, DEPTH, ROW>
+impl<N, const K: usize, O, const POOL: usize, const DEPTH: usize, const ROW: usize, S> Config for Arrays<N, K, O, POOL, DEPTH, ROW, S>
 where
     N: Number + 'static,
     O: Objects<N> + 'static,
+    S: core::ops::Deref<Target = [PreparedSolidNode<N>]> + Default + 'static,
 {
     type Number = N;
     type Index = u16;
     type Objects = O;
+    type Solids = S;
     type PerObject<T: Copy> = [T; K];
     type PerObjectPerOtherLight<T: Copy> = [[T; K]; MAX_LIGHTS - 1];
     type PerObjectList<T: Clone> = heapless::Vec<T, K>;

@@ -49,7 +49,7 @@ use semihosting::{print, HostFile};
 
 /// Sized by the scene: exactly its objects, which stay in flash; its grid's entries, its ray
 /// tree's depth and its row of antialiasing corners.
-type PreparedScene = Prepared<Arrays<scene::Number, { scene::OBJECT_COUNT }, FlashObjects, { scene::GRID_ENTRIES_PER_OBJECT }, { scene::TREE_DEPTH }, { scene::ANTIALIAS_ROW }>>;
+type PreparedScene = Prepared<Arrays<scene::Number, { scene::OBJECT_COUNT }, FlashObjects, { scene::GRID_ENTRIES_PER_OBJECT }, { scene::TREE_DEPTH }, { scene::ANTIALIAS_ROW }, FlashSolids>>;
 
 /// The scene's objects in flash, where the build put them prepared ahead (`OBJECTS_AHEAD`):
 /// they take no RAM (only each object's eye, which depends on the view, is in the scene).
@@ -64,12 +64,24 @@ impl core::ops::Deref for FlashObjects {
     }
 }
 
+/// The solids' nodes, prepared ahead in flash like the objects (none without solids).
+#[derive(Clone, Copy, Debug, Default)]
+struct FlashSolids;
+
+impl core::ops::Deref for FlashSolids {
+    type Target = [microtrace::model::PreparedSolidNode<scene::Number>];
+
+    fn deref(&self) -> &Self::Target {
+        &scene::SOLID_NODES_AHEAD
+    }
+}
+
 #[entry]
 fn main() -> ! {
     // The prepared scene (objects, acceleration structures) is static RAM, zero-initialised
     // and prepared in place: returned by value it would pass through the stack. (cortex-m-rt
     // makes an entry's `static mut` a `&'static mut`.)
-    static mut SCENE: PreparedScene = PreparedScene::unprepared(FlashObjects);
+    static mut SCENE: PreparedScene = PreparedScene::unprepared(FlashObjects, FlashSolids);
     // From here on an access outside the flash, the RAM and the peripherals faults, and so does
     // the stack running off the bottom of RAM (src/fault.rs).
     mpu::protect_memory();

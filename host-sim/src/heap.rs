@@ -95,6 +95,7 @@ impl<N: Number> Config for Heap<N> {
     type Number = N;
     type Index = u32;
     type Objects = Growing<Object<N>>;
+    type Solids = Growing<microtrace::model::PreparedSolidNode<N>>;
     type PerObject<T: Copy> = Boxed<T>;
     type PerObjectPerOtherLight<T: Copy> = Boxed<T>;
     type PerObjectList<T: Clone> = Growing<T>;

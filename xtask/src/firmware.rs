@@ -311,15 +311,20 @@ fn check_options(options: &FirmwareOptions) -> Result<(), String> {
     Ok(())
 }
 
-/// The `cube`/`sphere`/`cylinder`/`cone`/`torus` features the scene needs, `ray-tree` when its
+/// The `cube`/`sphere`/`cylinder`/`cone`/`torus` features the scene needs (its objects' and its
+/// solids' operands'), `csg` when it has solids, `ray-tree` when its
 /// objects reflect or transmit and `antialias` when it antialiases (the firmware models only those), parsing it with the same parser as the firmware's build script.
 fn primitive_features(scene: &Path) -> Result<Vec<&'static str>, String> {
     let description = parse_scene(scene)?;
     let mut features: Vec<&'static str> = Primitive::ALL
         .into_iter()
-        .filter(|primitive| description.objects.iter().any(|object| object.primitive.index() == primitive.index()))
+        .filter(|primitive| description.primitives().any(|(used, _)| used.index() == primitive.index()))
         .map(Primitive::name)
         .collect();
+    // Solids, when the scene has any (thesis chapter 3).
+    if !description.solids.is_empty() {
+        features.push("csg");
+    }
     // The ray tree, when an object reflects or transmits (chapter 5).
     if description.objects.iter().any(|object| object.material.spawns_rays()) {
         features.push("ray-tree");

@@ -13,8 +13,14 @@ use crate::number::Number;
 
 /// The spans of `primitive` (leaf `leaf` of its tree) along `ray`, in object space.
 pub fn leaf_spans<N: Number>(primitive: Primitive, ray: &Ray<N>, leaf: u16) -> Result<Spans<N, 2>, SpansOverflow> {
-    let crossings = primitive.crossings(ray);
     let mut spans = Spans::EMPTY;
+    leaf_spans_into(primitive, ray, leaf, &mut spans)?;
+    Ok(spans)
+}
+
+/// [`leaf_spans`] appended to `spans` (a solid's walk keeps every list in one).
+pub fn leaf_spans_into<N: Number, S: PushSpan<N>>(primitive: Primitive, ray: &Ray<N>, leaf: u16, spans: &mut S) -> Result<(), SpansOverflow> {
+    let crossings = primitive.crossings(ray);
     let mut open: Option<Boundary<N>> = None;
     let list: &[(N, Vector3<N>)] = crossings.list.get(..crossings.len).unwrap_or(&[]);
     for (index, &(t, normal)) in list.iter().enumerate() {
@@ -37,7 +43,24 @@ pub fn leaf_spans<N: Number>(primitive: Primitive, ray: &Ray<N>, leaf: u16) -> R
             (Some(_), true) => {}
         }
     }
-    Ok(spans)
+    Ok(())
+}
+
+/// Where spans are appended: a [`Spans`] list, or a `heapless::Vec` of them.
+pub trait PushSpan<N> {
+    fn push(&mut self, span: Span<N>) -> Result<(), SpansOverflow>;
+}
+
+impl<N: Number, const K: usize> PushSpan<N> for Spans<N, K> {
+    fn push(&mut self, span: Span<N>) -> Result<(), SpansOverflow> {
+        Spans::push(self, span)
+    }
+}
+
+impl<N, const K: usize> PushSpan<N> for heapless::Vec<Span<N>, K> {
+    fn push(&mut self, span: Span<N>) -> Result<(), SpansOverflow> {
+        heapless::Vec::push(self, span).map_err(|_| SpansOverflow { capacity: K })
+    }
 }
 
 /// Whether `p` (object space) is inside the unit primitive, boundary included.

@@ -6,26 +6,13 @@
 
 use heapless::Vec;
 
-use super::leaf::leaf_spans;
-use super::spans::{Boundary, Spans};
+use super::leaf::leaf_spans_into;
+use super::spans::{combine_into, Boundary, Span};
 use crate::geometry::{Ray, Vector3};
-use crate::model::{Object, Operation, MAX_SOLID_STACK, MAX_SPANS};
+use crate::model::{PreparedSolidNode, NO_SKIP};
+use crate::model::{MAX_HELD_SPANS, MAX_SOLID_STACK, MAX_SPANS};
 use crate::number::Number;
 use crate::shapes::Interval;
-
-/// No skip from this leaf (see [`SolidNode::Leaf`]).
-pub const NO_SKIP: u16 = u16::MAX;
-
-/// One node of a solid prepared in a number type, in post-order.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum SolidNode<N> {
-    /// A primitive operand, prepared as any object. `skip_to`: when this leaf starts the right
-    /// operand of a `∩` or `−` node, that node's place in the solid (else [`NO_SKIP`]): if the
-    /// left operand's spans are empty there, the walk goes straight to it.
-    Leaf { object: Object<N>, skip_to: u16 },
-    /// Combines the two span lists on top of the stack.
-    Combine(Operation),
-}
 
 /// A ray's first surface on a solid: the ray parameter, the surface's normal in its leaf's
 /// object space (outward from the solid: a subtracted operand's turned round; not normalised)
@@ -37,53 +24,59 @@ pub struct SolidHit<N> {
     pub leaf: u16,
 }
 
-/// The spans of the ray (world space) in the solid whose post-order nodes are `nodes`, adding
-/// the primitives tested to `leaf_tests`. `None` when a list or the stack would overflow
-/// (preparation rules that out) or the list is not a tree.
-pub fn solid_spans<N: Number>(nodes: &[SolidNode<N>], ray: &Ray<N>, leaf_tests: &mut u64) -> Option<Spans<N, MAX_SPANS>> {
-    let mut stack: Vec<Spans<N, MAX_SPANS>, MAX_SOLID_STACK> = Vec::new();
+/// The spans of the ray (world space) in the solid whose post-order nodes are `nodes`, handed
+/// to `then` (whose result it returns), adding the primitives tested to `leaf_tests`. `None`
+/// when the lists would overflow (preparation rules that out) or the list is not a tree.
+///
+/// The lists the walk holds are one list, each a run of it (`starts`): a leaf appends its
+/// spans, an operation replaces the last two runs by their combination. Nothing is written
+/// before it is used, and only spans are copied, never whole lists.
+pub fn solid_spans<N: Number, R>(nodes: &[PreparedSolidNode<N>], ray: &Ray<N>, leaf_tests: &mut u64, then: impl FnOnce(&[Span<N>]) -> R) -> Option<R> {
+    let mut held: Vec<Span<N>, MAX_HELD_SPANS> = Vec::new();
+    let mut starts: Vec<u8, MAX_SOLID_STACK> = Vec::new();
     let mut index = 0;
     while let Some(node) = nodes.get(index) {
         match node {
-            SolidNode::Leaf { object, skip_to } => {
-                if *skip_to != NO_SKIP && stack.last().is_some_and(Spans::is_empty) {
+            PreparedSolidNode::Leaf { object, skip_to } => {
+                let start = held.len();
+                if *skip_to != NO_SKIP && starts.last().is_some_and(|last| usize::from(*last) == start) {
                     // The left operand of the `∩` or `−` at `skip_to` is empty, so is the result.
-                    stack.push(Spans::EMPTY).ok()?;
+                    starts.push(start as u8).ok()?;
                     index = usize::from(*skip_to);
                     continue;
                 }
                 *leaf_tests += 1;
                 let local = object.object_from_world.ray(ray);
-                let spans = leaf_spans(object.primitive, &local, index as u16).ok()?;
-                stack.push(Spans::widened(&spans)?).ok()?;
+                leaf_spans_into(object.primitive, &local, index as u16, &mut held).ok()?;
+                starts.push(start as u8).ok()?;
             }
-            SolidNode::Combine(operation) => {
-                let right = stack.pop()?;
-                let left = stack.pop()?;
-                let combined = if left.is_empty() && operation.left_decides_empty() { Spans::EMPTY } else { Spans::combine(*operation, &left, &right).ok()? };
-                stack.push(combined).ok()?;
+            PreparedSolidNode::Combine(operation) => {
+                let right = usize::from(starts.pop()?);
+                let left = usize::from(*starts.last()?);
+                let mut combined: Vec<Span<N>, MAX_SPANS> = Vec::new();
+                let (left_spans, right_spans) = held.get(left..)?.split_at_checked(right.checked_sub(left)?)?;
+                if !(left_spans.is_empty() && operation.left_decides_empty()) {
+                    combine_into(*operation, left_spans, right_spans, &mut combined).ok()?;
+                }
+                held.truncate(left);
+                held.extend_from_slice(&combined).ok()?;
             }
         }
         index += 1;
     }
-    match stack.as_slice() {
-        [spans] => Some(*spans),
-        _ => None,
-    }
+    (starts.len() == 1).then(|| then(&held))
 }
 
 /// The first boundary of the solid's spans inside `interval`: the ray enters the solid there,
 /// or (from inside) leaves it.
-pub fn first_hit<N: Number>(nodes: &[SolidNode<N>], ray: &Ray<N>, interval: Interval<N>, leaf_tests: &mut u64) -> Option<SolidHit<N>> {
-    let spans = solid_spans(nodes, ray, leaf_tests)?;
-    let boundary = spans.iter().flat_map(|span| [span.enter, span.exit]).find(|boundary| interval.contains(boundary.t))?;
-    Some(surface(&boundary))
+pub fn first_hit<N: Number>(nodes: &[PreparedSolidNode<N>], ray: &Ray<N>, interval: Interval<N>, leaf_tests: &mut u64) -> Option<SolidHit<N>> {
+    solid_spans(nodes, ray, leaf_tests, |spans| spans.iter().flat_map(|span| [span.enter, span.exit]).find(|boundary| interval.contains(boundary.t)).map(|boundary| surface(&boundary)))?
 }
 
 /// Whether any boundary of the solid lies inside `interval` (a shadow ray is blocked by the
 /// first one it meets).
-pub fn occluded<N: Number>(nodes: &[SolidNode<N>], ray: &Ray<N>, interval: Interval<N>, leaf_tests: &mut u64) -> bool {
-    solid_spans(nodes, ray, leaf_tests).is_some_and(|spans| spans.iter().any(|span| interval.contains(span.enter.t) || interval.contains(span.exit.t)))
+pub fn occluded<N: Number>(nodes: &[PreparedSolidNode<N>], ray: &Ray<N>, interval: Interval<N>, leaf_tests: &mut u64) -> bool {
+    solid_spans(nodes, ray, leaf_tests, |spans| spans.iter().any(|span| interval.contains(span.enter.t) || interval.contains(span.exit.t))).unwrap_or(false)
 }
 
 fn surface<N: Number>(boundary: &Boundary<N>) -> SolidHit<N> {
@@ -91,17 +84,17 @@ fn surface<N: Number>(boundary: &Boundary<N>) -> SolidHit<N> {
     SolidHit { t: boundary.t, normal, leaf: boundary.leaf }
 }
 
-/// The leaves' skips (see [`SolidNode::Leaf`]) of a post-order list: for each `∩` or `−`
+/// The leaves' skips (see `PreparedSolidNode::Leaf`) of a post-order list: for each `∩` or `−`
 /// node, the first node of its right operand's subtree jumps to it. `starts` is scratch, one
 /// entry per node.
-pub fn link_skips<N>(nodes: &mut [SolidNode<N>]) -> Option<()> {
+pub fn link_skips<N>(nodes: &mut [PreparedSolidNode<N>]) -> Option<()> {
     // The first node of each result's subtree, as the walk would hold them.
     let mut starts: Vec<usize, { crate::model::MAX_SOLID_NODES }> = Vec::new();
     let mut skips: Vec<(usize, u16), { crate::model::MAX_SOLID_NODES }> = Vec::new();
     for (index, node) in nodes.iter().enumerate() {
         match node {
-            SolidNode::Leaf { .. } => starts.push(index).ok()?,
-            SolidNode::Combine(operation) => {
+            PreparedSolidNode::Leaf { .. } => starts.push(index).ok()?,
+            PreparedSolidNode::Combine(operation) => {
                 let right = starts.pop()?;
                 let left = starts.pop()?;
                 if operation.left_decides_empty() {
@@ -112,7 +105,7 @@ pub fn link_skips<N>(nodes: &mut [SolidNode<N>]) -> Option<()> {
         }
     }
     for (leaf, to) in skips {
-        if let Some(SolidNode::Leaf { skip_to, .. }) = nodes.get_mut(leaf) {
+        if let Some(PreparedSolidNode::Leaf { skip_to, .. }) = nodes.get_mut(leaf) {
             *skip_to = to;
         }
     }
@@ -136,7 +129,7 @@ mod tests {
         let nodes = scene.solid(scene.objects[0].primitive);
         assert!(matches!(scene.objects[0].primitive, crate::model::Primitive::Solid(SolidRange { first: 0, .. })));
         let ray = Ray { origin: Vector3::from_f64(origin), direction: Vector3::from_f64(direction) };
-        solid_spans(nodes, &ray, &mut 0).unwrap().iter().map(|span| (span.enter.t, span.exit.t)).collect()
+        solid_spans(nodes, &ray, &mut 0, |spans| spans.iter().map(|span| (span.enter.t, span.exit.t)).collect()).unwrap()
     }
 
     #[test]

@@ -44,96 +44,94 @@ pub struct SpansOverflow {
     pub capacity: usize,
 }
 
-/// At most `K` disjoint spans, in order along the ray.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// At most `K` disjoint spans, in order along the ray. Kept in a `heapless::Vec`: making an
+/// empty list writes nothing, and copying one copies only its spans.
+#[derive(Clone, Debug, PartialEq)]
 pub struct Spans<N, const K: usize> {
-    spans: [Option<Span<N>>; K],
-    len: usize,
+    spans: heapless::Vec<Span<N>, K>,
 }
 
 impl<N: Number, const K: usize> Spans<N, K> {
-    pub const EMPTY: Self = Self { spans: [None; K], len: 0 };
+    pub const EMPTY: Self = Self { spans: heapless::Vec::new() };
 
     pub fn len(&self) -> usize {
-        self.len
+        self.spans.len()
     }
 
     pub fn is_empty(&self) -> bool {
-        self.len == 0
+        self.spans.is_empty()
     }
 
     pub fn iter(&self) -> impl Iterator<Item = &Span<N>> + '_ {
-        self.spans.iter().take(self.len).flatten()
+        self.spans.iter()
+    }
+
+    pub fn as_slice(&self) -> &[Span<N>] {
+        &self.spans
     }
 
     /// The first span, whose entry is the surface a ray from outside sees.
     pub fn first(&self) -> Option<&Span<N>> {
-        self.iter().next()
-    }
-
-    /// The same spans in a list of another capacity (`None` if they do not fit).
-    pub fn widened<const A: usize>(spans: &Spans<N, A>) -> Option<Self> {
-        let mut result = Self::EMPTY;
-        for span in spans.iter() {
-            result.push(*span).ok()?;
-        }
-        Some(result)
+        self.spans.first()
     }
 
     /// Appends a span after the others (it must not start before the last one ends).
     pub fn push(&mut self, span: Span<N>) -> Result<(), SpansOverflow> {
-        let slot = self.spans.get_mut(self.len).ok_or(SpansOverflow { capacity: K })?;
-        *slot = Some(span);
-        self.len += 1;
-        Ok(())
+        self.spans.push(span).map_err(|_| SpansOverflow { capacity: K })
     }
 
-    /// `left operation right`, merging the two lists' boundaries in order of `t` (Table 3.1):
-    /// the result is inside wherever the operation says, from one boundary where that changes to
-    /// the next. A boundary of the right operand of a difference becomes a flipped surface.
+    /// `left operation right` (see [`combine_into`]).
     pub fn combine<const A: usize, const B: usize>(operation: Operation, left: &Spans<N, A>, right: &Spans<N, B>) -> Result<Self, SpansOverflow> {
         let mut result = Self::EMPTY;
-        let (mut left_events, mut right_events) = (Events::new(left), Events::new(right));
-        let (mut in_left, mut in_right) = (false, false);
-        let mut open: Option<Boundary<N>> = None;
-        loop {
-            let first = match (left_events.peek_t(), right_events.peek_t()) {
-                (None, None) => break,
-                (Some(a), None) => a,
-                (None, Some(b)) => b,
-                (Some(a), Some(b)) => a.min(b),
-            };
-            let t = first + coincident(first);
-            let was_inside = operation.inside(in_left, in_right);
-            // Every boundary at this `t` (within the hair), of either operand, before
-            // classifying: a shared face makes no sliver.
-            let mut left_surface = None;
-            let mut right_surface = None;
-            while let Some((boundary, entering)) = left_events.next_at(t) {
-                in_left = entering;
-                left_surface = Some(boundary);
-            }
-            while let Some((boundary, entering)) = right_events.next_at(t) {
-                in_right = entering;
-                right_surface = Some(Boundary { flipped: boundary.flipped != (operation == Operation::Difference), ..boundary });
-            }
-            let inside = operation.inside(in_left, in_right);
-            if inside == was_inside {
-                continue;
-            }
-            // The surface where the result changes: the operand whose change made it (the left
-            // one when both changed at once).
-            let Some(surface) = left_surface.filter(|_| changes(operation, in_left, in_right, true)).or(right_surface).or(left_surface) else {
-                continue;
-            };
-            if inside {
-                open = Some(surface);
-            } else if let Some(enter) = open.take() {
-                result.push(Span { enter, exit: surface })?;
-            }
-        }
+        combine_into(operation, &left.spans, &right.spans, &mut result.spans)?;
         Ok(result)
     }
+}
+
+/// `left operation right`, merging the two lists' boundaries in order of `t` (Table 3.1), appended
+/// to `out`: the result is inside wherever the operation says, from one boundary where that
+/// changes to the next. A boundary of the right operand of a difference becomes a flipped surface.
+pub fn combine_into<N: Number, const K: usize>(operation: Operation, left: &[Span<N>], right: &[Span<N>], out: &mut heapless::Vec<Span<N>, K>) -> Result<(), SpansOverflow> {
+    let (mut left_events, mut right_events) = (Events::new(left), Events::new(right));
+    let (mut in_left, mut in_right) = (false, false);
+    let mut open: Option<Boundary<N>> = None;
+    loop {
+        let first = match (left_events.peek_t(), right_events.peek_t()) {
+            (None, None) => break,
+            (Some(a), None) => a,
+            (None, Some(b)) => b,
+            (Some(a), Some(b)) => a.min(b),
+        };
+        let t = first + coincident(first);
+        let was_inside = operation.inside(in_left, in_right);
+        // Every boundary at this `t` (within the hair), of either operand, before
+        // classifying: a shared face makes no sliver.
+        let mut left_surface = None;
+        let mut right_surface = None;
+        while let Some((boundary, entering)) = left_events.next_at(t) {
+            in_left = entering;
+            left_surface = Some(boundary);
+        }
+        while let Some((boundary, entering)) = right_events.next_at(t) {
+            in_right = entering;
+            right_surface = Some(Boundary { flipped: boundary.flipped != (operation == Operation::Difference), ..boundary });
+        }
+        let inside = operation.inside(in_left, in_right);
+        if inside == was_inside {
+            continue;
+        }
+        // The surface where the result changes: the operand whose change made it (the left
+        // one when both changed at once).
+        let Some(surface) = left_surface.filter(|_| changes(operation, in_left, in_right, true)).or(right_surface).or(left_surface) else {
+            continue;
+        };
+        if inside {
+            open = Some(surface);
+        } else if let Some(enter) = open.take() {
+            out.push(Span { enter, exit: surface }).map_err(|_| SpansOverflow { capacity: K })?;
+        }
+    }
+    Ok(())
 }
 
 /// How far apart along the ray two boundaries may be and still count as one surface: 2⁻¹⁶ of
@@ -153,18 +151,18 @@ fn changes(operation: Operation, in_left: bool, in_right: bool, left: bool) -> b
 }
 
 /// A span list's boundaries in order: each span's entry (entering) then its exit (leaving).
-struct Events<'a, N, const K: usize> {
-    spans: &'a Spans<N, K>,
+struct Events<'a, N> {
+    spans: &'a [Span<N>],
     index: usize,
 }
 
-impl<'a, N: Number, const K: usize> Events<'a, N, K> {
-    fn new(spans: &'a Spans<N, K>) -> Self {
+impl<'a, N: Number> Events<'a, N> {
+    fn new(spans: &'a [Span<N>]) -> Self {
         Self { spans, index: 0 }
     }
 
     fn at(&self, index: usize) -> Option<(Boundary<N>, bool)> {
-        let span = self.spans.iter().nth(index / 2)?;
+        let span = self.spans.get(index / 2)?;
         Some(if index.is_multiple_of(2) { (span.enter, true) } else { (span.exit, false) })
     }
 

@@ -75,6 +75,17 @@ pub struct SettingLines {
 pub type SceneDescription<const MAX_OBJECTS: usize> = Description<Vec<ObjectDescription, MAX_OBJECTS>>;
 
 impl<L: Deref<Target = [ObjectDescription]>> Description<L> {
+    /// Every primitive the scene intersects, with its line: its objects' and its solids'
+    /// operands' (a solid is not one; [`Description::solids`] says whether it has any).
+    pub fn primitives(&self) -> impl Iterator<Item = (super::Primitive, u32)> + '_ {
+        let objects = self.objects.iter().filter(|object| !matches!(object.primitive, super::Primitive::Solid(_))).map(|object| (object.primitive, object.line));
+        let operands = self.solids.iter().filter_map(|node| match node {
+            SolidNode::Leaf(leaf) => Some((leaf.primitive, leaf.line)),
+            SolidNode::Combine { .. } => None,
+        });
+        objects.chain(operands)
+    }
+
     /// Whether the scene uses anything of chapter 5 (reflection, refraction, a second light or
     /// an intensity, antialiasing): without, it renders exactly as the thesis's pipeline.
     pub fn uses_chapter_five(&self) -> bool {

@@ -9,6 +9,7 @@
 //! optimizations it is its enclosure, a box (§3.3.6), and its operands are the scene's
 //! [`SolidNode`]s in the range it names.
 
+use super::object::Object;
 use super::object_description::ObjectDescription;
 use super::primitive::Primitive;
 use super::{SceneError, SceneErrorKind};
@@ -74,6 +75,8 @@ pub const MAX_SPANS: usize = 8;
 /// The most span lists the post-order walk keeps at once (the deepest chain of right operands,
 /// plus one).
 pub const MAX_SOLID_STACK: usize = 8;
+/// The most spans the walk's lists hold together at any moment (they share one list).
+pub const MAX_HELD_SPANS: usize = 24;
 
 /// One node of a solid's tree in post-order (a list of them lives in the description, so the
 /// size of the larger variant costs nothing per node beyond the list's).
@@ -87,12 +90,28 @@ pub enum SolidNode {
     Combine { operation: Operation, line: u32 },
 }
 
+/// No skip from this leaf (see [`PreparedSolidNode::Leaf`]).
+pub const NO_SKIP: u16 = u16::MAX;
+
+/// One node of a solid prepared in a number type, in post-order (`csg::solid` walks them).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum PreparedSolidNode<N> {
+    /// A primitive operand, prepared as any object. `skip_to`: when this leaf starts the right
+    /// operand of a `∩` or `−` node, that node's place in the solid (else [`NO_SKIP`]): if the
+    /// left operand's spans are empty there, the walk goes straight to it (§3.3.7).
+    Leaf { object: Object<N>, skip_to: u16 },
+    /// Combines the two span lists on top of the walk's stack.
+    Combine(Operation),
+}
+
 /// What a tree needs to be walked: the most spans along a ray at its root and in any part, and
 /// the most span lists the walk holds at once.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub struct SolidNeeds {
     pub spans: usize,
     pub stack: usize,
+    /// The most spans the lists held at once may have together.
+    pub held: usize,
 }
 
 /// [`SolidNeeds`] of the post-order `nodes` (one solid's), and the box (in world space, as each
@@ -123,6 +142,7 @@ pub fn solid_needs_and_box(nodes: &[SolidNode]) -> Option<(SolidNeeds, [[f64; 3]
         }
         needs.spans = needs.spans.max(stack.last().map_or(0, |top| top.0));
         needs.stack = needs.stack.max(stack.len());
+        needs.held = needs.held.max(stack.iter().map(|held| held.0).sum());
     }
     match stack.as_slice() {
         [(_, enclosure)] => Some((needs, *enclosure)),
@@ -172,6 +192,9 @@ pub fn enclosing_transform(nodes: &[SolidNode], line: u32) -> Result<Matrix4, Sc
     let (needs, enclosure) = solid_needs_and_box(nodes).ok_or(error(SceneErrorKind::SingularTransform))?;
     if needs.spans > MAX_SPANS {
         return Err(error(SceneErrorKind::SolidTooComplex { what: "spans along a ray", needs: needs.spans, capacity: MAX_SPANS }));
+    }
+    if needs.held > MAX_HELD_SPANS {
+        return Err(error(SceneErrorKind::SolidTooComplex { what: "spans held at once by the walk", needs: needs.held, capacity: MAX_HELD_SPANS }));
     }
     if needs.stack > MAX_SOLID_STACK {
         return Err(error(SceneErrorKind::SolidTooComplex { what: "span lists held at once by the walk", needs: needs.stack, capacity: MAX_SOLID_STACK }));

@@ -56,7 +56,10 @@ impl<C: Config> Clone for SpaceGrid<C> {
     }
 }
 
-impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize> SpaceGrid<Arrays<N, K, O, POOL, DEPTH, ROW>> {
+impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S> SpaceGrid<Arrays<N, K, O, POOL, DEPTH, ROW, S>>
+where
+    S: core::ops::Deref<Target = [crate::model::PreparedSolidNode<N>]> + Default + 'static,
+{
     pub const NONE: Self = Self {
         resolution: 0,
         low: Vector3 { x: N::ZEROED, y: N::ZEROED, z: N::ZEROED },

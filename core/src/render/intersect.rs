@@ -74,7 +74,7 @@ pub(crate) fn object_occludes<N: Number, C: Config<Number = N>>(scene: &Prepared
 pub(crate) fn surface_of<'a, N: Number, C: Config<Number = N>>(scene: &'a Prepared<C>, hit: &NearestHit<N>) -> Option<&'a Object<N>> {
     let object = scene.objects.get(hit.object)?;
     #[cfg(feature = "csg")]
-    if let Some(crate::csg::SolidNode::Leaf { object: leaf, .. }) = scene.solid(object.primitive).get(usize::from(hit.leaf)) {
+    if let Some(crate::model::PreparedSolidNode::Leaf { object: leaf, .. }) = scene.solid(object.primitive).get(usize::from(hit.leaf)) {
         return Some(leaf);
     }
     Some(object)

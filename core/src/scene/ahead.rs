@@ -97,28 +97,26 @@ pub fn write_prepared_ahead<N: Number, C: Config<Number = N>>(scene: &Prepared<C
     let count = scene.objects.len();
     writeln!(out, "pub static OBJECTS_AHEAD: [microtrace::model::Object<Number>; {count}] = [")?;
     for object in scene.objects.iter() {
-        let columns = object.object_from_world.columns();
-        write!(out, "    microtrace::model::Object {{ primitive: ")?;
-        primitive_path(object.primitive, out)?;
-        write!(out, ", object_from_world: microtrace::geometry::AffineTransform::from_parts([")?;
-        for column in columns {
-            numbers(out, &column)?;
-            write!(out, ", ")?;
+        write!(out, "    ")?;
+        object_literal(object, out)?;
+        writeln!(out, ",")?;
+    }
+    writeln!(out, "];")?;
+    // The solids' nodes, in flash like the objects (empty without solids).
+    #[cfg(feature = "csg")]
+    let solids: &[crate::model::PreparedSolidNode<N>] = &scene.solid_nodes;
+    #[cfg(not(feature = "csg"))]
+    let solids: &[crate::model::PreparedSolidNode<N>] = &[];
+    writeln!(out, "pub static SOLID_NODES_AHEAD: [microtrace::model::PreparedSolidNode<Number>; {}] = [", solids.len())?;
+    for node in solids {
+        match node {
+            crate::model::PreparedSolidNode::Leaf { object, skip_to } => {
+                write!(out, "    microtrace::model::PreparedSolidNode::Leaf {{ object: ")?;
+                object_literal(object, out)?;
+                writeln!(out, ", skip_to: {skip_to} }},")?;
+            }
+            crate::model::PreparedSolidNode::Combine(operation) => writeln!(out, "    microtrace::model::PreparedSolidNode::Combine(microtrace::model::Operation::{operation:?}),")?,
         }
-        write!(out, "], ")?;
-        numbers(out, &object.object_from_world.translation)?;
-        let m = &object.material;
-        write!(out, "), material: microtrace::model::PreparedMaterial {{ colour: {}, ka: ", m.colour)?;
-        m.ka.write_literal(out)?;
-        write!(out, ", kd: ")?;
-        m.kd.write_literal(out)?;
-        write!(out, ", ks: ")?;
-        m.ks.write_literal(out)?;
-        write!(out, ", rnd: ")?;
-        m.rnd.write_literal(out)?;
-        write!(out, ", power: {}, reflectance: ", m.power)?;
-        numbers(out, &m.reflectance)?;
-        writeln!(out, " }} }},")?;
     }
     writeln!(out, "];")?;
     writeln!(out, "pub static BOUNDS_AHEAD: [microtrace::optimize::ObjectBounds<Number>; {}] = [", bounds.len())?;
@@ -274,9 +272,36 @@ fn vector<N: Number>(out: &mut dyn Write, v: Vector3<N>) -> fmt::Result {
 }
 
 /// The primitive as a Rust expression (a torus with its tube in steps).
+/// One prepared object as a Rust literal, every number bit for bit.
+fn object_literal<N: Number>(object: &crate::model::Object<N>, out: &mut dyn Write) -> fmt::Result {
+    let columns = object.object_from_world.columns();
+    write!(out, "microtrace::model::Object {{ primitive: ")?;
+    primitive_path(object.primitive, out)?;
+    write!(out, ", object_from_world: microtrace::geometry::AffineTransform::from_parts([")?;
+    for column in columns {
+        numbers(out, &column)?;
+        write!(out, ", ")?;
+    }
+    write!(out, "], ")?;
+    numbers(out, &object.object_from_world.translation)?;
+    let m = &object.material;
+    write!(out, "), material: microtrace::model::PreparedMaterial {{ colour: {}, ka: ", m.colour)?;
+    m.ka.write_literal(out)?;
+    write!(out, ", kd: ")?;
+    m.kd.write_literal(out)?;
+    write!(out, ", ks: ")?;
+    m.ks.write_literal(out)?;
+    write!(out, ", rnd: ")?;
+    m.rnd.write_literal(out)?;
+    write!(out, ", power: {}, reflectance: ", m.power)?;
+    numbers(out, &m.reflectance)?;
+    write!(out, " }} }}")
+}
+
 fn primitive_path(primitive: Primitive, out: &mut dyn Write) -> fmt::Result {
     match primitive {
         Primitive::Torus(tube) => write!(out, "microtrace::model::Primitive::Torus(microtrace::model::Tube::from_steps({}))", tube.steps()),
+        Primitive::Solid(range) => write!(out, "microtrace::model::Primitive::Solid(microtrace::model::SolidRange {{ first: {}, count: {} }})", range.first, range.count),
         other => write!(out, "microtrace::model::Primitive::{other:?}"),
     }
 }

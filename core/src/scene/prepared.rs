@@ -26,10 +26,9 @@ use crate::scene::range::{self, RayOrigins};
 use crate::model::{Antialias, Description, ObjectDescription, Optimizations, Viewport, Window, MAX_LIGHTS};
 use crate::model::{Palette, Rgb4};
 use crate::shading::ShadingConstants;
+use crate::model::PreparedSolidNode;
 #[cfg(feature = "csg")]
-use crate::csg::{SolidNode, NO_SKIP};
-#[cfg(feature = "csg")]
-use crate::model::MAX_SOLID_NODES;
+use crate::model::{MAX_SOLID_NODES, NO_SKIP};
 
 /// Adaptive antialiasing as the render needs it (thesis fig 2.9): the image's viewport, the
 /// subdivision levels L and the threshold on an 8-bit channel's range over a square's corners.
@@ -127,7 +126,7 @@ pub struct Prepared<C: Config> {
     /// Every solid's nodes, prepared (`csg::solid`): a solid object's `Primitive::Solid` range
     /// indexes it as it indexes the description's.
     #[cfg(feature = "csg")]
-    pub solid_nodes: Vec<SolidNode<C::Number>, MAX_SOLID_NODES>,
+    pub solid_nodes: C::Solids,
 }
 
 impl<C: Config> core::fmt::Debug for Prepared<C> {
@@ -136,12 +135,18 @@ impl<C: Config> core::fmt::Debug for Prepared<C> {
     }
 }
 
-impl<N: Number + 'static, const MAX_OBJECTS: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize> Prepared<Arrays<N, MAX_OBJECTS, O, POOL, DEPTH, ROW>> {
+impl<N: Number + 'static, const MAX_OBJECTS: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S> Prepared<Arrays<N, MAX_OBJECTS, O, POOL, DEPTH, ROW, S>>
+where
+    S: core::ops::Deref<Target = [crate::model::PreparedSolidNode<N>]> + Default + 'static,
+{
     /// Every byte zero but the objects' (`objects`; the firmware's, in flash, take none): the
     /// value of a scene to be prepared in place. The firmware keeps its scene in a `static` of
     /// this value (zero-initialised RAM, no flash) and prepares it there: a scene returned by
-    /// value would pass through the stack.
-    pub const fn unprepared(objects: O) -> Self {
+    /// value would pass through the stack. `solids`: where its solids' nodes are (unused
+    /// without the `csg` feature).
+    pub const fn unprepared(objects: O, solids: S) -> Self {
+        #[cfg(not(feature = "csg"))]
+        core::mem::forget(solids);
         Self {
             objects,
             eyes: [Vector3 { x: N::ZEROED, y: N::ZEROED, z: N::ZEROED }; MAX_OBJECTS],
@@ -175,7 +180,7 @@ impl<N: Number + 'static, const MAX_OBJECTS: usize, O: Objects<N> + 'static, con
             palette: Palette { entries: [Rgb4 { r: 0, g: 0, b: 0 }; 256] },
             acceleration: Acceleration::UNSET,
             #[cfg(feature = "csg")]
-            solid_nodes: Vec::new(),
+            solid_nodes: solids,
         }
     }
 }
@@ -183,7 +188,7 @@ impl<N: Number + 'static, const MAX_OBJECTS: usize, O: Objects<N> + 'static, con
 impl<N: Number + 'static, const MAX_OBJECTS: usize, const POOL: usize, const DEPTH: usize, const ROW: usize> Prepared<Arrays<N, MAX_OBJECTS, Vec<Object<N>, MAX_OBJECTS>, POOL, DEPTH, ROW>> {
     /// Every byte zero, no objects: the value of a scene to be prepared in place
     /// ([`Scene::unprepared`] with no objects).
-    pub const UNPREPARED: Self = Self::unprepared(Vec::new());
+    pub const UNPREPARED: Self = Self::unprepared(Vec::new(), Vec::new());
 }
 
 impl<N: Number, C: Config<Number = N>> Prepared<C> {
@@ -215,7 +220,7 @@ impl<N: Number, C: Config<Number = N>> Prepared<C> {
             palette: Palette { entries: [Rgb4 { r: 0, g: 0, b: 0 }; 256] },
             acceleration: Acceleration::unset(count),
             #[cfg(feature = "csg")]
-            solid_nodes: Vec::new(),
+            solid_nodes: C::Solids::default(),
         }
     }
 }
@@ -224,6 +229,7 @@ impl<N: Number, C: Config<Number = N>> Prepared<C> {
 impl<N: Number, C: Config<Number = N>> Prepared<C>
 where
     C::Objects: List<Object<N>>,
+    C::Solids: List<PreparedSolidNode<N>>,
 {
     /// The scene `description` describes, its tables sized for its objects (or the `Config`'s
     /// arrays).
@@ -368,7 +374,10 @@ fn prepare_object<N: Number>(object: &ObjectDescription, origins: &RayOrigins) -
 }
 
 #[cfg(feature = "csg")]
-impl<N: Number, C: Config<Number = N>> Prepared<C> {
+impl<N: Number, C: Config<Number = N>> Prepared<C>
+where
+    C::Solids: List<PreparedSolidNode<N>>,
+{
     /// The solids' nodes in the number type, in the description's order, each solid's skips
     /// linked (`csg::solid`).
     fn prepare_solids<L>(&mut self, description: &Description<L>, descriptions: &[ObjectDescription], origins: &RayOrigins) -> Result<(), SceneError> {
@@ -379,12 +388,14 @@ impl<N: Number, C: Config<Number = N>> Prepared<C> {
                     if !leaf.primitive.is_compiled() {
                         return Err(SceneError { line: leaf.line, kind: SceneErrorKind::PrimitiveNotCompiled { primitive: leaf.primitive.name() } });
                     }
-                    SolidNode::Leaf { object: prepare_object::<N>(leaf, origins)?, skip_to: NO_SKIP }
+                    PreparedSolidNode::Leaf { object: prepare_object::<N>(leaf, origins)?, skip_to: NO_SKIP }
                 }
-                crate::model::SolidNode::Combine { operation, .. } => SolidNode::Combine(*operation),
+                crate::model::SolidNode::Combine { operation, .. } => PreparedSolidNode::Combine(*operation),
             };
-            // Capacities are equal, so every node fits.
-            let _ = self.solid_nodes.push(prepared);
+            self.solid_nodes.push(prepared).map_err(|_| SceneError {
+                line: 0,
+                kind: SceneErrorKind::SolidTooComplex { what: "primitives and operations in the scene's solids", needs: description.solids.len(), capacity: MAX_SOLID_NODES },
+            })?;
         }
         for object in descriptions {
             if let crate::model::Primitive::Solid(range) = object.primitive {
@@ -396,10 +407,13 @@ impl<N: Number, C: Config<Number = N>> Prepared<C> {
         }
         Ok(())
     }
+}
 
+#[cfg(feature = "csg")]
+impl<N: Number, C: Config<Number = N>> Prepared<C> {
     /// The nodes of a solid object (empty for any other).
     #[inline]
-    pub fn solid(&self, primitive: crate::model::Primitive) -> &[SolidNode<N>] {
+    pub fn solid(&self, primitive: crate::model::Primitive) -> &[PreparedSolidNode<N>] {
         match primitive {
             crate::model::Primitive::Solid(range) => self.solid_nodes.get(range.nodes()).unwrap_or(&[]),
             _ => &[],

@@ -118,7 +118,9 @@ impl<N: Number> Crossings<N> {
             // Insertion: move it back past later crossings.
             let mut index = crossings.len - 1;
             while index > 0 && crossings.list.get(index - 1).is_some_and(|before| before.0 > t) {
-                crossings.list.swap(index - 1, index);
+                if let Some([before, here]) = crossings.list.get_mut(index - 1..=index) {
+                    core::mem::swap(before, here);
+                }
                 index -= 1;
             }
         }

@@ -16,8 +16,8 @@ use std::path::PathBuf;
 
 use anyhow::Context;
 use microtrace::geometry::{AffineTransform, Ray, Vector3};
-use microtrace::csg::{solid_spans, SolidNode, Spans};
-use microtrace::model::{ObjectDescription, Primitive, MAX_SPANS};
+use microtrace::csg::{solid_spans, Span};
+use microtrace::model::{ObjectDescription, PreparedSolidNode, Primitive};
 use microtrace::optimize::bounding_volume::unit_volume;
 
 use crate::rendering::prepare_host;
@@ -64,7 +64,7 @@ pub fn run(args: VolumeArgs) -> anyhow::Result<()> {
 
 /// The volume of one object in world units, by `size` x `size` parallel rays along −z; a solid's
 /// `nodes` are its operands prepared in `f64` (empty for a primitive).
-pub fn object_volume(object: &ObjectDescription, nodes: &[SolidNode<f64>], size: u32) -> anyhow::Result<Volume> {
+pub fn object_volume(object: &ObjectDescription, nodes: &[PreparedSolidNode<f64>], size: u32) -> anyhow::Result<Volume> {
     let corners = unit_volume(object.primitive).map(|corner| object.world_from_object.transform_point(corner));
     let low = [0, 1, 2].map(|axis| corners.iter().map(|c| c[axis]).fold(f64::INFINITY, f64::min));
     let high = [0, 1, 2].map(|axis| corners.iter().map(|c| c[axis]).fold(f64::NEG_INFINITY, f64::max));
@@ -80,14 +80,15 @@ pub fn object_volume(object: &ObjectDescription, nodes: &[SolidNode<f64>], size:
             let x = low[0] + (column as f64 + 0.5) * width;
             let y = low[1] + (row as f64 + 0.5) * height;
             let world = Ray { origin: Vector3::new(x, y, start_z), direction: Vector3::new(0.0, 0.0, -1.0) };
-            let spans: Spans<f64, MAX_SPANS> = match object.primitive {
-                Primitive::Solid(_) => solid_spans(nodes, &world, &mut 0).context("the solid's spans overflow their capacity")?,
-                primitive => microtrace::csg::leaf_spans(primitive, &object_from_world.ray(&world), 0)
-                    .ok()
-                    .and_then(|spans| Spans::widened(&spans))
-                    .context("more spans along a ray than a primitive has")?,
+            let depth = |spans: &[Span<f64>]| spans.iter().map(|span| span.exit.t - span.enter.t).sum();
+            depths[row * n + column] = match object.primitive {
+                Primitive::Solid(_) => solid_spans(nodes, &world, &mut 0, depth).context("the solid's spans overflow their capacity")?,
+                primitive => depth(
+                    microtrace::csg::leaf_spans(primitive, &object_from_world.ray(&world), 0)
+                        .map_err(|overflow| anyhow::anyhow!("more than {} spans along a ray", overflow.capacity))?
+                        .as_slice(),
+                ),
             };
-            depths[row * n + column] = spans.iter().map(|span| span.exit.t - span.enter.t).sum();
         }
     }
     let area = width * height;
