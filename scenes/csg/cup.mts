@@ -17,7 +17,7 @@ group 3 4 9 14 up      # the table
 background 0
 
 cube                   # the table top
-  scale 400 10 400
+  scale 400 10 320   # to z = 120: short of the eye (a bound past it would cover the screen)
   translate -200 -10 -200
   colour 3
 difference             # the cup

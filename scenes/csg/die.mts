@@ -16,8 +16,8 @@ group 3 3 8 12 up      # the table
 background 0
 
 cube                   # the table top
-  scale 400 10 400
-  translate -200 -10 -200
+  scale 260 10 215
+  translate -160 -10 -170
   colour 3
 difference             # the die: a rounded cube ...
   intersection

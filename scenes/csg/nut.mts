@@ -17,7 +17,7 @@ group 3 10 6 2 up      # the bench
 background 0
 
 cube                   # the bench
-  scale 400 10 400
+  scale 400 10 320   # to z = 120: short of the eye (a bound past it would cover the screen)
   translate -200 -10 -200
   colour 3
 difference             # a nut lying on the bench

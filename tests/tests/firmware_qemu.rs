@@ -306,6 +306,39 @@ fn links_the_torus(elf: &std::path::Path) -> bool {
     names.iter().any(|name| name.contains("shapes::torus") || name.contains("shapes::polynomial"))
 }
 
+/// Solids (issue 23, constructive solid geometry) on the chip: the die (a cube ∩ a sphere minus
+/// six pips) renders the host's picture in `f32` on both boards and in `soft32` on the M3, the
+/// cup (a torus handle in a solid) in `soft32` on the M4F; the walk of solids is linked only
+/// where the scene has one (snooker links none of it).
+#[test]
+fn the_die_on_mps2_an386_matches_the_host() {
+    let run = run_firmware("csg/die.mts", Board::Mps2An386);
+    let (_, expected, statistics) = host_render("csg/die.mts");
+    let framebuffer = std::fs::read(&run.framebuffer).unwrap();
+    assert_eq!(framebuffer, expected, "csg/die.mts: the framebuffer differs from the host render");
+    assert_eq!(run.numbers["ro_tests"], statistics.ro_tests);
+    assert_eq!(run.numbers["shadow_tests"], statistics.shadow_tests);
+    linked_code_is_clean("csg/die.mts", Board::Mps2An386, &run.numbers);
+    assert!(links_csg(&run.elf), "csg/die.mts: the walk of solids is not linked");
+    assert!(!links_csg(&run_firmware("snooker.mts", Board::Mps2An386).elf), "snooker links the walk of solids");
+}
+
+#[test]
+fn the_die_on_lm3s6965evb_matches_the_host_in_f32_and_soft32() {
+    firmware_matches_host_in::<f32>("csg/die.mts", Board::Lm3s6965evb);
+    firmware_matches_host_in::<microtrace::number::SoftFloat>("csg/die.mts", Board::Lm3s6965evb);
+}
+
+#[test]
+fn the_cup_in_soft32_on_mps2_an386_matches_the_host() {
+    firmware_matches_host_in::<microtrace::number::SoftFloat>("csg/cup.mts", Board::Mps2An386);
+}
+
+fn links_csg(elf: &std::path::Path) -> bool {
+    let names = xtask::elf::symbol_names(&std::fs::read(elf).unwrap()).unwrap();
+    names.iter().any(|name| name.contains("csg::solid") || name.contains("csg::spans"))
+}
+
 #[test]
 fn snooker_in_fixed_point_on_microbit_matches_the_host() {
     firmware_matches_host_in::<microtrace::number::Fixed>("snooker.mts", Board::Microbit);
