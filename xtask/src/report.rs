@@ -19,10 +19,16 @@ pub const END_MARKER: &str = "<!-- firmware-report:end -->";
 const SECTION_HEADING: &str = "## The firmware: cost and footprint";
 
 const SCENES: [&str; 2] = ["scenes/snooker.mts", "scenes/lattice.mts"];
-/// The scenes beyond chapter 4: chapter 5's (the ray tree, antialiasing) and the torus §5.2.1
-/// proposes, run with their own `optimize` in these number types only: what the tree, the
-/// corners and the quartic cost on each board.
-const CHAPTER_FIVE_SCENES: [&str; 3] = ["scenes/snooker-polished.mts", "scenes/lattice-antialiased.mts", "scenes/torus.mts"];
+/// The scenes beyond chapter 4: chapter 5's (the ray tree, antialiasing), the torus §5.2.1
+/// proposes and a solid of chapter 3 (the die), run with their own `optimize` in these number
+/// types only: what the tree, the corners, the quartic and the walk of a solid cost on each
+/// board.
+const CHAPTER_FIVE_SCENES: [&str; 4] = ["scenes/snooker-polished.mts", "scenes/lattice-antialiased.mts", "scenes/torus.mts", "scenes/csg/die.mts"];
+
+/// A scene file's name as the report's runs name it: `scenes/csg/die.mts` is `die`.
+fn stem(file: &str) -> &str {
+    file.rsplit('/').next().unwrap_or(file).trim_end_matches(".mts")
+}
 const CHAPTER_FIVE_NUMBERS: [&str; 2] = ["f32", "soft32"];
 /// The all-primitives builds are compared in this number type only: code size, not arithmetic.
 const ALL_PRIMITIVES_NUMBER: &str = "f32";
@@ -229,7 +235,7 @@ impl ReportFilter {
     }
 
     fn keeps(&self, scene: &str, board: Board, number: &str, primitives: Primitives, optimizations: &str) -> bool {
-        let stem = scene.trim_start_matches("scenes/").trim_end_matches(".mts");
+        let stem = stem(scene);
         self.scene.as_deref().is_none_or(|wanted| wanted == stem)
             && self.board.is_none_or(|wanted| wanted == board)
             && self.number.as_deref().is_none_or(|wanted| wanted == number)
@@ -241,8 +247,8 @@ impl ReportFilter {
     /// has, or keeps no run at all.
     fn check(&self) -> Result<(), String> {
         if let Some(scene) = &self.scene {
-            if !SCENES.iter().chain(CHAPTER_FIVE_SCENES.iter()).any(|file| file.trim_start_matches("scenes/").trim_end_matches(".mts") == scene) {
-                return Err(format!("--scene {scene}: the report runs snooker, lattice, snooker-polished and lattice-antialiased"));
+            if !SCENES.iter().chain(CHAPTER_FIVE_SCENES.iter()).any(|file| stem(file) == scene) {
+                return Err(format!("--scene {scene}: the report runs snooker, lattice, snooker-polished, lattice-antialiased, torus and die"));
             }
         }
         if let Some(number) = &self.number {
@@ -474,7 +480,7 @@ pub fn markdown(runs: &[ReportRun], misses: &[ReportMiss]) -> String {
     );
     text += "| scene | board | number | instructions per pixel | frame instructions | prepare instructions | render instructions | flash bytes | static RAM bytes | peak stack bytes | f64 routines | panic symbols | host |\n";
     text += "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n";
-    let chapter_five = |run: &ReportRun| CHAPTER_FIVE_SCENES.iter().any(|file| file.trim_start_matches("scenes/").trim_end_matches(".mts") == run.scene);
+    let chapter_five = |run: &ReportRun| CHAPTER_FIVE_SCENES.iter().any(|file| stem(file) == run.scene);
     let scene_optimizations = |run: &&ReportRun| run.primitives == Primitives::Scene && run.optimizations == "scene" && !chapter_five(run);
     for run in runs.iter().filter(scene_optimizations) {
         text += &format!(
@@ -545,7 +551,7 @@ fn host_column(run: &ReportRun) -> String {
 fn chapter_five_table(runs: &[ReportRun]) -> String {
     let chapter_five: Vec<&ReportRun> = runs
         .iter()
-        .filter(|run| CHAPTER_FIVE_SCENES.iter().any(|file| file.trim_start_matches("scenes/").trim_end_matches(".mts") == run.scene))
+        .filter(|run| CHAPTER_FIVE_SCENES.iter().any(|file| stem(file) == run.scene))
         .collect();
     if chapter_five.is_empty() {
         return String::new();
@@ -597,7 +603,7 @@ fn without_optimizations(runs: &[ReportRun]) -> String {
     );
     text += &format!("| scene | board | {} |\n|---|---|{}\n", NUMBERS.join(" | "), "---:|".repeat(NUMBERS.len()));
     for scene in SCENES {
-        let stem = scene.trim_start_matches("scenes/").trim_end_matches(".mts");
+        let stem = stem(scene);
         for board in Board::ALL {
             let find = |number: &str| runs.iter().filter(none).find(|run| run.scene == stem && run.board == board && run.number == number);
             let Some(f32_run) = find("f32") else { continue };
