@@ -119,35 +119,56 @@ pub struct SolidNeeds {
 /// their intersection for `∩`, the left one's for `−` (§3.3.6). `None` if the list is not one
 /// whole tree.
 pub fn solid_needs_and_box(nodes: &[SolidNode]) -> Option<(SolidNeeds, [[f64; 3]; 2])> {
-    // (spans, box) of each result the walk holds.
-    let mut stack: heapless::Vec<(usize, [[f64; 3]; 2]), MAX_SOLID_NODES> = heapless::Vec::new();
     let mut needs = SolidNeeds::default();
+    let mut root = None;
+    walk_boxes(nodes, |enclosure, held| {
+        needs.spans = needs.spans.max(held.last().copied().unwrap_or(0));
+        needs.stack = needs.stack.max(held.len());
+        needs.held = needs.held.max(held.iter().sum());
+        root = Some(enclosure);
+    })?;
+    Some((needs, root?))
+}
+
+/// Each node's box in world space, in post-order, handed to `each` with whether the node is a
+/// leaf: a leaf's is its own, an operation's its operands' combined as §3.3.6 combines screen
+/// boxes (the simulator's overlay draws them). `None` if the list is not one whole tree.
+pub fn for_each_node_box(nodes: &[SolidNode], mut each: impl FnMut(bool, [[f64; 3]; 2])) -> Option<()> {
+    let mut index = 0;
+    walk_boxes(nodes, |enclosure, _| {
+        each(matches!(nodes.get(index), Some(SolidNode::Leaf(_))), enclosure);
+        index += 1;
+    })
+}
+
+/// The walk of a tree's boxes: after each node, `after(its box, the most spans of each list
+/// held)`; `None` unless the list is one whole tree.
+fn walk_boxes(nodes: &[SolidNode], mut after: impl FnMut([[f64; 3]; 2], &[usize])) -> Option<()> {
+    // The box and the most spans of each result the walk holds.
+    let mut stack: heapless::Vec<[[f64; 3]; 2], MAX_SOLID_NODES> = heapless::Vec::new();
+    let mut spans: heapless::Vec<usize, MAX_SOLID_NODES> = heapless::Vec::new();
     for node in nodes {
         match node {
             SolidNode::Leaf(leaf) => {
-                let spans = if matches!(leaf.primitive, Primitive::Torus(_)) { 2 } else { 1 };
-                stack.push((spans, leaf.world_box())).ok()?;
+                let count = if matches!(leaf.primitive, Primitive::Torus(_)) { 2 } else { 1 };
+                stack.push(leaf.world_box()).ok()?;
+                spans.push(count).ok()?;
             }
             SolidNode::Combine { operation, .. } => {
-                let (right_spans, right) = stack.pop()?;
-                let (left_spans, left) = stack.pop()?;
-                let spans = operation.spans_bound(left_spans, right_spans);
+                let (right, left) = (stack.pop()?, stack.pop()?);
+                let (right_spans, left_spans) = (spans.pop()?, spans.pop()?);
                 let enclosure = match operation {
                     Operation::Union => [min3(left[0], right[0]), max3(left[1], right[1])],
                     Operation::Intersection => [max3(left[0], right[0]), min3(left[1], right[1])],
                     Operation::Difference => left,
                 };
-                stack.push((spans, enclosure)).ok()?;
+                stack.push(enclosure).ok()?;
+                spans.push(operation.spans_bound(left_spans, right_spans)).ok()?;
             }
         }
-        needs.spans = needs.spans.max(stack.last().map_or(0, |top| top.0));
-        needs.stack = needs.stack.max(stack.len());
-        needs.held = needs.held.max(stack.iter().map(|held| held.0).sum());
+        after(*stack.last()?, &spans);
     }
-    match stack.as_slice() {
-        [(_, enclosure)] => Some((needs, *enclosure)),
-        _ => None,
-    }
+    (stack.len() == 1).then_some(())
 }
 
 fn min3(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {

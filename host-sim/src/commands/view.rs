@@ -125,6 +125,8 @@ enum Change {
 struct Finished {
     rendered: Rendered,
     extents: Vec<ScreenExtent>,
+    /// Each solid's enclosure tree (§3.3.6).
+    enclosures: Vec<ui::enclosures::NodeBox>,
     grid: ui::overlay::GridLines,
     plan: PlanView,
     fill: PixelbufferFill,
@@ -369,6 +371,7 @@ fn render(scene: &HostScene, settings: &Settings, display: &mut SimulatorDisplay
                 rows: (pixel(e.first_row, height), pixel(e.last_row, height)),
             })
             .collect();
+        let enclosures = ui::enclosures::enclosure_trees(scene, &prepared.camera, step);
         let mut grid = grid_lines(&prepared.acceleration, prepared.camera.width(), prepared.camera.height());
         if step > 1 {
             let to_pixels = |lines: &mut Vec<u16>, pixels: u16| {
@@ -415,7 +418,7 @@ fn render(scene: &HostScene, settings: &Settings, display: &mut SimulatorDisplay
             statistics = passes.total();
         }
         let trace = started.elapsed();
-        Ok(Finished { rendered: Rendered { viewport, palette, pixels, statistics, passes, preprocess, trace }, extents, grid, plan, fill })
+        Ok(Finished { rendered: Rendered { viewport, palette, pixels, statistics, passes, preprocess, trace }, extents, enclosures, grid, plan, fill })
     })
 }
 
@@ -448,6 +451,7 @@ fn draw_finished(
     if settings.overlay {
         ui::overlay::draw_grid(&finished.grid, display);
         ui::overlay::draw(&finished.extents, display);
+        ui::enclosures::draw(&finished.enclosures, display);
         let _ = Text::with_baseline("plan x-z from above: volumes", Point::new(left, panel.y), text, Baseline::Top).draw(display);
         let area = Rectangle::new(Point::new(left, PLAN_TOP as i32), Size::new(ui::plan::WIDTH, ui::plan::HEIGHT));
         ui::plan::draw(&finished.plan, display, area);

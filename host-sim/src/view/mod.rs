@@ -2,6 +2,7 @@
 
 pub mod colours;
 pub mod depth_ranges;
+pub mod enclosures;
 pub mod fill;
 pub mod keys;
 pub mod preview;
