@@ -560,7 +560,8 @@ fn chapter_five_table(runs: &[ReportRun]) -> String {
         "\nThe thesis's chapter 5 on the chip (README, \"Chapter 5\"): `snooker-polished` (the ray tree:\n\
          reflective balls, a glass cue ball, two lights, depth 4) and `lattice-antialiased` (corners\n\
          split twice where they differ by 6 %); and the ring torus it proposes (§5.2.1), `torus` (two\n\
-         tori, a ball and a table, shadows on). With the scene's own `optimize`; rays per pixel counts\n\
+         tori, a ball and a table, shadows on); and a solid of chapter 3, `die` (a cube ∩ a sphere minus\n\
+         six pips, README \"Solids\"). With the scene's own `optimize`; rays per pixel counts\n\
          every primary ray (with antialiasing, every corner and sub-corner), secondary rays the tree's:\n\n\
          | scene | board | number | instructions per pixel | frame instructions | rays per pixel | secondary rays | flash bytes | static RAM bytes | peak stack bytes | f64 routines | panic symbols | host |\n\
          |---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n",
