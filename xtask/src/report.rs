@@ -735,7 +735,7 @@ mod tests {
     #[test]
     fn a_filter_keeps_only_its_runs() {
         let boards = Board::ALL.len();
-        assert_eq!(plan(&ReportFilter::default()).len(), 2 * 2 * NUMBERS.len() * boards + 2 * boards + 3 * boards * CHAPTER_FIVE_NUMBERS.len());
+        assert_eq!(plan(&ReportFilter::default()).len(), 2 * 2 * NUMBERS.len() * boards + 2 * boards + CHAPTER_FIVE_SCENES.len() * boards * CHAPTER_FIVE_NUMBERS.len());
         let one = ReportFilter { scene: Some("snooker".into()), board: Some(Board::Mps2An386), number: Some("f32".into()), ..Default::default() };
         let kept: Vec<(Primitives, &str)> = plan(&one).into_iter().map(|(_, _, _, primitives, optimizations)| (primitives, optimizations)).collect();
         assert_eq!(kept, [(Primitives::Scene, "scene"), (Primitives::Scene, "none"), (Primitives::All, "scene")]);
@@ -743,6 +743,10 @@ mod tests {
         let none = ReportFilter { number: Some("fixed".into()), primitives: Some(Primitives::All), ..Default::default() };
         assert!(none.check().unwrap_err().contains("keeps no run"));
         assert!(ReportFilter { scene: Some("teapot".into()), ..Default::default() }.check().is_err());
+        // A scene in a folder is named by its file's stem.
+        let die = ReportFilter { scene: Some("die".into()), ..Default::default() };
+        assert_eq!(plan(&die).len(), boards * CHAPTER_FIVE_NUMBERS.len());
+        assert!(plan(&die).iter().all(|(scene, _, _, _, _)| scene.ends_with("scenes/csg/die.mts")));
     }
 
     #[test]
