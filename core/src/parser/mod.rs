@@ -38,6 +38,12 @@
 //! - **Checks order** for one statement: unknown keyword, then "needs an object", then the
 //!   argument count, then the arguments from left to right.
 //! - Global statements may appear anywhere, also between objects; the last one wins.
+//! - **Solids**: `union`, `intersection` and `difference` open a solid, `end` closes the innermost
+//!   one; object statements change the most recent operand, or after `end` the solid (its
+//!   leaves' transforms and the material of those that set none). A solid's checks (its leaves
+//!   invertible, the walk's capacities) are made where it ends as an object: at the next object
+//!   or the end of the input, naming the solid's first line (a leaf's own line when it is
+//!   singular).
 
 mod number;
 #[cfg(test)]
