@@ -282,18 +282,30 @@ fn lattice_in_fixed_point_on_lm3s6965evb_matches_the_host() {
     firmware_matches_host_in::<microtrace::number::Fixed>("lattice.mts", Board::Lm3s6965evb);
 }
 
+/// A scene with code of its own on the chip, in `f32` on the M4F: the host's picture and counts,
+/// and the modules named linked only there (snooker links none of them).
+fn links_only_where_used(name: &str, modules: &[&str]) {
+    let run = run_firmware(name, Board::Mps2An386);
+    let (_, expected, statistics) = host_render(name);
+    let framebuffer = std::fs::read(&run.framebuffer).unwrap();
+    assert_eq!(framebuffer, expected, "{name}: the framebuffer differs from the host render");
+    assert_eq!(run.numbers["ro_tests"], statistics.ro_tests);
+    assert_eq!(run.numbers["shadow_tests"], statistics.shadow_tests);
+    linked_code_is_clean(name, Board::Mps2An386, &run.numbers);
+    assert!(links(&run.elf, modules), "{name}: none of {modules:?} is linked");
+    assert!(!links(&run_firmware("snooker.mts", Board::Mps2An386).elf, modules), "snooker links one of {modules:?}");
+}
+
+fn links(elf: &std::path::Path, modules: &[&str]) -> bool {
+    let names = xtask::elf::symbol_names(&std::fs::read(elf).unwrap()).unwrap();
+    names.iter().any(|name| modules.iter().any(|module| name.contains(module)))
+}
+
 /// The ring torus (scenes/torus.mts) on the chip: the host's picture in `f32` on the M4F and in
-/// `soft32` on the M3, and its intersection linked only there (snooker links none of it).
+/// `soft32` on the M3, and its intersection linked only there.
 #[test]
 fn the_torus_on_mps2_an386_matches_the_host() {
-    let run = run_firmware("torus.mts", Board::Mps2An386);
-    let (_, expected, statistics) = host_render("torus.mts");
-    let framebuffer = std::fs::read(&run.framebuffer).unwrap();
-    assert_eq!(framebuffer, expected, "torus.mts: the framebuffer differs from the host render");
-    assert_eq!(run.numbers["ro_tests"], statistics.ro_tests);
-    linked_code_is_clean("torus.mts", Board::Mps2An386, &run.numbers);
-    assert!(links_the_torus(&run.elf), "torus.mts: the torus's intersection is not linked");
-    assert!(!links_the_torus(&run_firmware("snooker.mts", Board::Mps2An386).elf), "snooker links the torus");
+    links_only_where_used("torus.mts", &["shapes::torus", "shapes::polynomial"]);
 }
 
 #[test]
@@ -301,26 +313,13 @@ fn the_torus_in_soft32_on_lm3s6965evb_matches_the_host() {
     firmware_matches_host_in::<microtrace::number::SoftFloat>("torus.mts", Board::Lm3s6965evb);
 }
 
-fn links_the_torus(elf: &std::path::Path) -> bool {
-    let names = xtask::elf::symbol_names(&std::fs::read(elf).unwrap()).unwrap();
-    names.iter().any(|name| name.contains("shapes::torus") || name.contains("shapes::polynomial"))
-}
-
 /// Solids (issue 23, constructive solid geometry) on the chip: the die (a cube ∩ a sphere minus
 /// six pips) renders the host's picture in `f32` on both boards and in `soft32` on the M3, the
 /// cup (a torus handle in a solid) in `soft32` on the M4F; the walk of solids is linked only
-/// where the scene has one (snooker links none of it).
+/// where the scene has one.
 #[test]
 fn the_die_on_mps2_an386_matches_the_host() {
-    let run = run_firmware("csg/die.mts", Board::Mps2An386);
-    let (_, expected, statistics) = host_render("csg/die.mts");
-    let framebuffer = std::fs::read(&run.framebuffer).unwrap();
-    assert_eq!(framebuffer, expected, "csg/die.mts: the framebuffer differs from the host render");
-    assert_eq!(run.numbers["ro_tests"], statistics.ro_tests);
-    assert_eq!(run.numbers["shadow_tests"], statistics.shadow_tests);
-    linked_code_is_clean("csg/die.mts", Board::Mps2An386, &run.numbers);
-    assert!(links_csg(&run.elf), "csg/die.mts: the walk of solids is not linked");
-    assert!(!links_csg(&run_firmware("snooker.mts", Board::Mps2An386).elf), "snooker links the walk of solids");
+    links_only_where_used("csg/die.mts", &["csg::solid", "csg::spans"]);
 }
 
 #[test]
@@ -332,11 +331,6 @@ fn the_die_on_lm3s6965evb_matches_the_host_in_f32_and_soft32() {
 #[test]
 fn the_cup_in_soft32_on_mps2_an386_matches_the_host() {
     firmware_matches_host_in::<microtrace::number::SoftFloat>("csg/cup.mts", Board::Mps2An386);
-}
-
-fn links_csg(elf: &std::path::Path) -> bool {
-    let names = xtask::elf::symbol_names(&std::fs::read(elf).unwrap()).unwrap();
-    names.iter().any(|name| name.contains("csg::solid") || name.contains("csg::spans"))
 }
 
 #[test]

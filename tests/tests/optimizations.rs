@@ -104,6 +104,19 @@ fn all_combinations_match<N: Number>(description: &SceneDescription<CAPACITY>, r
     (all, none)
 }
 
+/// A generated scene's combinations in `f64` and `f32` (one in PGA, the other in RGB, by the
+/// seed) and, every fourth seed, in Q32.32 (near the eye a ray's rounding matters most);
+/// the all-on and none statistics in `f64`.
+fn seeded_scene_matches(scene: &SceneDescription<CAPACITY>, seed: u64, label: &str) -> (Statistics, Statistics) {
+    let rgb = seed % 2 == 1;
+    let (all, none) = all_combinations_match::<f64>(scene, rgb, label);
+    all_combinations_match::<f32>(scene, !rgb, label);
+    if seed.is_multiple_of(4) && Scene::<Fixed, CAPACITY>::prepare(scene).is_ok() {
+        all_combinations_match::<Fixed>(scene, rgb, label);
+    }
+    (all, none)
+}
+
 fn random_matrix(rng: &mut XorShift, centre: [f64; 3], size: f64) -> Matrix4 {
     let mut m = Matrix4::IDENTITY;
     // Centre the unit primitive, scale non-uniformly, rotate about random axes, place.
@@ -296,13 +309,7 @@ fn eye_plane_scenes_render_identically_under_every_combination() {
                 clipped += usize::from(prepared.acceleration.extent(index) != Some(Extent::whole(screen)));
             }
         }
-        let rgb = seed % 2 == 1;
-        let (all, none) = all_combinations_match::<f64>(&scene, rgb, &label);
-        all_combinations_match::<f32>(&scene, !rgb, &label);
-        // Near the eye a ray's rounding matters most: every fourth scene also in Q32.32.
-        if seed % 4 == 0 && Scene::<Fixed, CAPACITY>::prepare(&scene).is_ok() {
-            all_combinations_match::<Fixed>(&scene, rgb, &label);
-        }
+        let (all, none) = seeded_scene_matches(&scene, seed, &label);
         tests_all += all.ro_tests;
         tests_none += none.ro_tests;
     }
@@ -461,12 +468,7 @@ fn random_solid_scenes_render_identically_under_every_combination() {
     for seed in 0..seeds {
         let scene = random_solid_scene(seed);
         let label = format!("random solid scene seed {seed}");
-        let rgb = seed % 2 == 1;
-        let (all, none) = all_combinations_match::<f64>(&scene, rgb, &label);
-        all_combinations_match::<f32>(&scene, !rgb, &label);
-        if seed % 4 == 0 && Scene::<Fixed, CAPACITY>::prepare(&scene).is_ok() {
-            all_combinations_match::<Fixed>(&scene, rgb, &label);
-        }
+        let (all, none) = seeded_scene_matches(&scene, seed, &label);
         tests_all += all.ro_tests;
         tests_none += none.ro_tests;
     }

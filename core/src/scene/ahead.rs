@@ -271,7 +271,6 @@ fn vector<N: Number>(out: &mut dyn Write, v: Vector3<N>) -> fmt::Result {
     write!(out, " }}")
 }
 
-/// The primitive as a Rust expression (a torus with its tube in steps).
 /// One prepared object as a Rust literal, every number bit for bit.
 fn object_literal<N: Number>(object: &crate::model::Object<N>, out: &mut dyn Write) -> fmt::Result {
     let columns = object.object_from_world.columns();
@@ -298,6 +297,7 @@ fn object_literal<N: Number>(object: &crate::model::Object<N>, out: &mut dyn Wri
     write!(out, " }} }}")
 }
 
+/// The primitive as a Rust expression (a torus with its tube in steps, a solid with its range).
 fn primitive_path(primitive: Primitive, out: &mut dyn Write) -> fmt::Result {
     match primitive {
         Primitive::Torus(tube) => write!(out, "microtrace::model::Primitive::Torus(microtrace::model::Tube::from_steps({}))", tube.steps()),

@@ -128,16 +128,19 @@ mod tests {
     }
 
     /// The analytic volume lies within the estimate, and both the error and the estimate shrink
-    /// as the grid grows.
-    fn converges(primitive: Primitive, scale: [f64; 3], exact: f64) {
-        let o = object(primitive, scale);
-        let coarse = object_volume(&o, &[], 64).unwrap();
-        let fine = object_volume(&o, &[], 256).unwrap();
+    /// as the grid grows (`what` names the object in a failure; `nodes`: a solid's).
+    fn converges_with(what: &str, object: &ObjectDescription, nodes: &[PreparedSolidNode<f64>], exact: f64) {
+        let coarse = object_volume(object, nodes, 64).unwrap();
+        let fine = object_volume(object, nodes, 256).unwrap();
         for (n, v) in [(64, coarse), (256, fine)] {
-            assert!((v.volume - exact).abs() <= v.error, "{primitive:?} at {n}: {} ± {} against {exact}", v.volume, v.error);
+            assert!((v.volume - exact).abs() <= v.error, "{what} at {n}: {} ± {} against {exact}", v.volume, v.error);
         }
-        assert!(fine.error < coarse.error / 2.0, "{primitive:?}: ± {} at 64, ± {} at 256", coarse.error, fine.error);
-        assert!((fine.volume - exact).abs() < exact * 0.01, "{primitive:?}: {} against {exact}", fine.volume);
+        assert!(fine.error < coarse.error / 2.0, "{what}: ± {} at 64, ± {} at 256", coarse.error, fine.error);
+        assert!((fine.volume - exact).abs() < exact * 0.01, "{what}: {} against {exact}", fine.volume);
+    }
+
+    fn converges(primitive: Primitive, scale: [f64; 3], exact: f64) {
+        converges_with(&format!("{primitive:?}"), &object(primitive, scale), &[], exact);
     }
 
     #[test]
@@ -156,13 +159,7 @@ mod tests {
         let scene: crate::scene_file::HostScene = microtrace::parser::parse_into_list(text.as_bytes()).unwrap();
         let prepared = prepare_host::<f64>(&scene).unwrap();
         let object = &scene.objects[0];
-        let coarse = object_volume(object, prepared.solid(object.primitive), 64).unwrap();
-        let fine = object_volume(object, prepared.solid(object.primitive), 256).unwrap();
-        for (n, v) in [(64, coarse), (256, fine)] {
-            assert!((v.volume - exact).abs() <= v.error, "{text} at {n}: {} ± {} against {exact}", v.volume, v.error);
-        }
-        assert!(fine.error < coarse.error / 2.0, "{text}: ± {} at 64, ± {} at 256", coarse.error, fine.error);
-        assert!((fine.volume - exact).abs() < exact * 0.01, "{text}: {} against {exact}", fine.volume);
+        converges_with(text, object, prepared.solid(object.primitive), exact);
     }
 
     #[test]
