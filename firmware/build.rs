@@ -29,7 +29,7 @@
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
-use microtrace::model::{Optimizations, Primitive, SceneDescription};
+use microtrace::model::{solid_needs_and_box, Optimizations, Primitive, SceneDescription, SolidNeeds};
 use microtrace::number::NumberKind;
 
 /// Objects a scene file may hold at build time; the firmware itself is sized by the scene.
@@ -411,6 +411,17 @@ fn generate<const N: usize>(
     // (xtask counts them, `MICROTRACE_GRID_ENTRIES_PER_OBJECT`), else the core's default.
     let grid_entries = grid_entries_per_object();
     writeln!(out, "pub const GRID_ENTRIES_PER_OBJECT: usize = {grid_entries};").unwrap();
+    // A ray's walk through a solid holds lists of spans (`csg::solid`): exactly as many as the
+    // scene's solids need, each need the largest over its solids (none without solids).
+    let needs = d
+        .objects
+        .iter()
+        .filter_map(|object| if let Primitive::Solid(range) = object.primitive { d.solids.get(range.nodes()) } else { None })
+        .filter_map(|nodes| solid_needs_and_box(nodes).map(|(needs, _)| needs))
+        .fold(SolidNeeds::default(), |all, one| SolidNeeds { spans: all.spans.max(one.spans), stack: all.stack.max(one.stack), held: all.held.max(one.held) });
+    writeln!(out, "pub const SOLID_SPANS: usize = {};", needs.spans).unwrap();
+    writeln!(out, "pub const SOLID_HELD_SPANS: usize = {};", needs.held).unwrap();
+    writeln!(out, "pub const SOLID_LISTS: usize = {};", needs.stack).unwrap();
     out
 }
 

@@ -13,7 +13,7 @@
 use core::fmt::Debug;
 use core::marker::PhantomData;
 
-use crate::model::{Object, Objects, PreparedSolidNode, MAX_DEPTH, MAX_LIGHTS, MAX_SOLID_NODES};
+use crate::model::{Object, Objects, PreparedSolidNode, MAX_DEPTH, MAX_HELD_SPANS, MAX_LIGHTS, MAX_SOLID_NODES, MAX_SOLID_STACK, MAX_SPANS};
 use crate::number::Number;
 use crate::storage::{Index, List, Table};
 
@@ -26,8 +26,8 @@ pub trait Config: 'static {
     /// Where the prepared objects live (the scene's own list, or the firmware's in flash).
     type Objects: Objects<Self::Number>;
     /// Where the solids' prepared nodes live (the scene's own list, or the firmware's in flash,
-    /// exactly its scene's).
-    type Solids: core::ops::Deref<Target = [PreparedSolidNode<Self::Number>]> + Default;
+    /// exactly its scene's), and the capacities of a ray's walk through them.
+    type Solids: SolidStorage<Self::Number>;
     /// One `T` per object.
     type PerObject<T: Copy>: Table<T>;
     /// One `T` per object for each light after the first ([`MAX_LIGHTS`]` − 1` tables of
@@ -65,6 +65,27 @@ pub trait Config: 'static {
     }
 }
 
+/// Where a build keeps its solids' prepared nodes, and the capacities of the lists a ray's walk
+/// through a solid holds (`csg::solid`), in the type: the firmware's are exactly what its
+/// scene's solids need (`model::SolidNeeds`, which preparation derives from each tree: spans
+/// of `A op B` ≤ spans of `A` + spans of `B`), a host's the format's limits. Each list lives
+/// on the stack for one ray.
+pub trait SolidStorage<N>: core::ops::Deref<Target = [PreparedSolidNode<N>]> + Default {
+    /// The spans the walk's lists hold together ([`MAX_HELD_SPANS`] at most).
+    type HeldSpans<T: Clone>: List<T>;
+    /// The spans of one list, an operation's result ([`MAX_SPANS`] at most).
+    type Spans<T: Clone>: List<T>;
+    /// The lists held at once ([`MAX_SOLID_STACK`] at most).
+    type Lists<T: Clone>: List<T>;
+}
+
+/// The scene's own list of nodes, walked with the format's limits.
+impl<N, const K: usize> SolidStorage<N> for heapless::Vec<PreparedSolidNode<N>, K> {
+    type HeldSpans<T: Clone> = heapless::Vec<T, MAX_HELD_SPANS>;
+    type Spans<T: Clone> = heapless::Vec<T, MAX_SPANS>;
+    type Lists<T: Clone> = heapless::Vec<T, MAX_SOLID_STACK>;
+}
+
 /// The grid's pool entries per object by default: an object may overlap this many cells on
 /// average (24); none without the `acceleration-tables` feature (no grid).
 pub const DEFAULT_GRID_ENTRIES_PER_OBJECT: usize = if cfg!(feature = "acceleration-tables") { 24 } else { 0 };
@@ -100,7 +121,7 @@ impl<N, const K: usize, O, const POOL: usize, const DEPTH: usize, const ROW: usi
 where
     N: Number + 'static,
     O: Objects<N> + 'static,
-    S: core::ops::Deref<Target = [PreparedSolidNode<N>]> + Default + 'static,
+    S: SolidStorage<N> + 'static,
 {
     type Number = N;
     type Index = u16;

@@ -63,6 +63,12 @@ pub trait List<T>: Deref<Target = [T]> + DerefMut + Default + Clone {
     fn pop(&mut self) -> Option<T>;
     /// Empties the list.
     fn clear(&mut self);
+    /// Keeps the first `len` items (all, when there are fewer).
+    fn truncate(&mut self, len: usize) {
+        while self.len() > len {
+            self.pop();
+        }
+    }
 }
 
 impl<T: Clone, const K: usize> List<T> for heapless::Vec<T, K> {
@@ -81,6 +87,11 @@ impl<T: Clone, const K: usize> List<T> for heapless::Vec<T, K> {
     #[inline(always)]
     fn clear(&mut self) {
         heapless::Vec::clear(self)
+    }
+
+    #[inline(always)]
+    fn truncate(&mut self, len: usize) {
+        heapless::Vec::truncate(self, len)
     }
 }
 

@@ -76,6 +76,14 @@ impl core::ops::Deref for FlashSolids {
     }
 }
 
+/// A ray's walk through a solid holds exactly the lists the scene's solids need (none without
+/// solids), on the stack.
+impl microtrace::config::SolidStorage<scene::Number> for FlashSolids {
+    type HeldSpans<T: Clone> = heapless::Vec<T, { scene::SOLID_HELD_SPANS }>;
+    type Spans<T: Clone> = heapless::Vec<T, { scene::SOLID_SPANS }>;
+    type Lists<T: Clone> = heapless::Vec<T, { scene::SOLID_LISTS }>;
+}
+
 #[entry]
 fn main() -> ! {
     // The prepared scene (objects, acceleration structures) is static RAM, zero-initialised

@@ -6,8 +6,8 @@
 use std::marker::PhantomData;
 use std::ops::{Deref, DerefMut};
 
-use microtrace::config::{Config, DEFAULT_GRID_ENTRIES_PER_OBJECT, DEFAULT_TREE_DEPTH};
-use microtrace::model::Object;
+use microtrace::config::{Config, SolidStorage, DEFAULT_GRID_ENTRIES_PER_OBJECT, DEFAULT_TREE_DEPTH};
+use microtrace::model::{Object, PreparedSolidNode, MAX_HELD_SPANS, MAX_SOLID_STACK, MAX_SPANS};
 use microtrace::number::Number;
 use microtrace::scene::Prepared;
 use microtrace::storage::{List, Table};
@@ -95,7 +95,7 @@ impl<N: Number> Config for Heap<N> {
     type Number = N;
     type Index = u32;
     type Objects = Growing<Object<N>>;
-    type Solids = Growing<microtrace::model::PreparedSolidNode<N>>;
+    type Solids = Growing<PreparedSolidNode<N>>;
     type PerObject<T: Copy> = Boxed<T>;
     type PerObjectPerOtherLight<T: Copy> = Boxed<T>;
     type PerObjectList<T: Clone> = Growing<T>;
@@ -112,6 +112,14 @@ impl<N: Number> Config for Heap<N> {
     fn grid_entries(objects: usize) -> usize {
         objects.max(GRID_POOL_OBJECTS_AT_LEAST).saturating_mul(Self::GRID_ENTRIES_PER_OBJECT)
     }
+}
+
+/// The solids' nodes on the heap; a ray's walk keeps its lists on the stack (an allocation per
+/// ray would cost more than the walk), within the format's limits.
+impl<N> SolidStorage<N> for Growing<PreparedSolidNode<N>> {
+    type HeldSpans<T: Clone> = heapless::Vec<T, MAX_HELD_SPANS>;
+    type Spans<T: Clone> = heapless::Vec<T, MAX_SPANS>;
+    type Lists<T: Clone> = heapless::Vec<T, MAX_SOLID_STACK>;
 }
 
 /// A scene prepared in the number type `N`, its tables on the heap.

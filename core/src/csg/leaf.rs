@@ -6,7 +6,7 @@
 //! (the ray touching the surface: one crossing, or a torus's double root counted once) cannot
 //! turn the rest of the ray inside out.
 
-use super::spans::{Boundary, Span, Spans, SpansOverflow};
+use super::spans::{Boundary, PushSpan, Span, Spans, SpansOverflow};
 use crate::geometry::{Ray, Vector3};
 use crate::model::Primitive;
 use crate::number::Number;
@@ -44,23 +44,6 @@ pub fn leaf_spans_into<N: Number, S: PushSpan<N>>(primitive: Primitive, ray: &Ra
         }
     }
     Ok(())
-}
-
-/// Where spans are appended: a [`Spans`] list, or a `heapless::Vec` of them.
-pub trait PushSpan<N> {
-    fn push(&mut self, span: Span<N>) -> Result<(), SpansOverflow>;
-}
-
-impl<N: Number, const K: usize> PushSpan<N> for Spans<N, K> {
-    fn push(&mut self, span: Span<N>) -> Result<(), SpansOverflow> {
-        Spans::push(self, span)
-    }
-}
-
-impl<N, const K: usize> PushSpan<N> for heapless::Vec<Span<N>, K> {
-    fn push(&mut self, span: Span<N>) -> Result<(), SpansOverflow> {
-        heapless::Vec::push(self, span).map_err(|_| SpansOverflow { capacity: K })
-    }
 }
 
 /// Whether `p` (object space) is inside the unit primitive, boundary included.

@@ -10,7 +10,7 @@ pub mod leaf;
 pub mod solid;
 pub mod spans;
 
-pub use leaf::{leaf_spans, leaf_spans_into, PushSpan};
-pub use spans::{coincident, combine_into, Boundary, Operation, Span, Spans, SpansOverflow};
+pub use leaf::{leaf_spans, leaf_spans_into};
+pub use spans::{coincident, combine_into, Boundary, Operation, PushSpan, Span, Spans, SpansOverflow};
 #[cfg(feature = "csg")]
 pub use solid::{first_hit, occluded, solid_spans, SolidHit};

@@ -19,6 +19,7 @@
 use crate::geometry::Vector3;
 pub use crate::model::Operation;
 use crate::number::Number;
+use crate::storage::List;
 
 /// Where a span starts or ends: the ray parameter, the tree's leaf whose surface it is, whether
 /// that surface's normal is to be flipped (the inside of a subtracted operand), and the leaf's
@@ -88,10 +89,28 @@ impl<N: Number, const K: usize> Spans<N, K> {
     }
 }
 
+/// Where spans are appended: a [`Spans`] list, or any [`List`] of them.
+pub trait PushSpan<N> {
+    fn push(&mut self, span: Span<N>) -> Result<(), SpansOverflow>;
+}
+
+impl<N: Number, const K: usize> PushSpan<N> for Spans<N, K> {
+    fn push(&mut self, span: Span<N>) -> Result<(), SpansOverflow> {
+        Spans::push(self, span)
+    }
+}
+
+impl<N: Clone, L: List<Span<N>>> PushSpan<N> for L {
+    #[inline(always)]
+    fn push(&mut self, span: Span<N>) -> Result<(), SpansOverflow> {
+        List::push(self, span).map_err(|_| SpansOverflow { capacity: L::CAPACITY })
+    }
+}
+
 /// `left operation right`, merging the two lists' boundaries in order of `t` (Table 3.1), appended
 /// to `out`: the result is inside wherever the operation says, from one boundary where that
 /// changes to the next. A boundary of the right operand of a difference becomes a flipped surface.
-pub fn combine_into<N: Number, const K: usize>(operation: Operation, left: &[Span<N>], right: &[Span<N>], out: &mut heapless::Vec<Span<N>, K>) -> Result<(), SpansOverflow> {
+pub fn combine_into<N: Number>(operation: Operation, left: &[Span<N>], right: &[Span<N>], out: &mut impl PushSpan<N>) -> Result<(), SpansOverflow> {
     let (mut left_events, mut right_events) = (Events::new(left), Events::new(right));
     let (mut in_left, mut in_right) = (false, false);
     let mut open: Option<Boundary<N>> = None;
@@ -128,7 +147,7 @@ pub fn combine_into<N: Number, const K: usize>(operation: Operation, left: &[Spa
         if inside {
             open = Some(surface);
         } else if let Some(enter) = open.take() {
-            out.push(Span { enter, exit: surface }).map_err(|_| SpansOverflow { capacity: K })?;
+            out.push(Span { enter, exit: surface })?;
         }
     }
     Ok(())

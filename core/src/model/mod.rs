@@ -15,6 +15,7 @@
 mod colour;
 mod description;
 mod error;
+mod extent;
 mod light;
 mod material;
 mod object;
@@ -27,6 +28,7 @@ mod view;
 pub use colour::{Palette, Rgb4, Rgb888};
 pub use description::{Antialias, Description, SceneDescription, SettingLines, DEFAULT_DEPTH, MAX_DEPTH};
 pub use object_description::ObjectDescription;
+pub use extent::Extent;
 pub use error::{SceneError, SceneErrorKind, Token, TOKEN_EXCERPT_BYTES};
 pub use light::{Light, LightSource, MAX_LIGHTS};
 pub use material::{Material, PreparedMaterial};

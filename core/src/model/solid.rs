@@ -9,6 +9,7 @@
 //! optimizations it is its enclosure, a box (§3.3.6), and its operands are the scene's
 //! [`SolidNode`]s in the range it names.
 
+use super::extent::Extent;
 use super::object::Object;
 use super::object_description::ObjectDescription;
 use super::primitive::Primitive;
@@ -94,14 +95,29 @@ pub enum SolidNode {
 pub const NO_SKIP: u16 = u16::MAX;
 
 /// One node of a solid prepared in a number type, in post-order (`csg::solid` walks them).
+/// Each has its screen extent (§3.3.6: a primary ray through a pixel outside it cannot meet
+/// the node's part of the solid; [`Extent::EVERYWHERE`] until the view is known).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum PreparedSolidNode<N> {
     /// A primitive operand, prepared as any object. `skip_to`: when this leaf starts the right
     /// operand of a `∩` or `−` node, that node's place in the solid (else [`NO_SKIP`]): if the
-    /// left operand's spans are empty there, the walk goes straight to it (§3.3.7).
-    Leaf { object: Object<N>, skip_to: u16 },
-    /// Combines the two span lists on top of the walk's stack.
-    Combine(Operation),
+    /// left operand's spans are empty there, the walk goes straight to it (§3.3.7). `top`: the
+    /// highest node whose subtree starts with this leaf (the leaf's own place if none), where a
+    /// pixel's pruning starts.
+    Leaf { object: Object<N>, skip_to: u16, top: u16, extent: Extent },
+    /// Combines the two span lists on top of the walk's stack; `left` is the left operand's
+    /// place (the right one's is just before this node).
+    Combine { operation: Operation, left: u16, extent: Extent },
+}
+
+impl<N> PreparedSolidNode<N> {
+    /// The node's screen extent.
+    #[inline]
+    pub fn extent(&self) -> &Extent {
+        match self {
+            PreparedSolidNode::Leaf { extent, .. } | PreparedSolidNode::Combine { extent, .. } => extent,
+        }
+    }
 }
 
 /// What a tree needs to be walked: the most spans along a ray at its root and in any part, and

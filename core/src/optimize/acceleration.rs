@@ -86,7 +86,7 @@ impl<C: Config> Clone for Acceleration<C> {
 
 impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S> Acceleration<Arrays<N, K, O, POOL, DEPTH, ROW, S>>
 where
-    S: core::ops::Deref<Target = [crate::model::PreparedSolidNode<N>]> + Default + 'static,
+    S: crate::config::SolidStorage<N> + 'static,
 {
     /// Every byte zero, nothing built: the value before [`Acceleration::rebuild`] (a `static`
     /// holding it costs zero-initialised RAM and no flash).

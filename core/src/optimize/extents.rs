@@ -4,35 +4,11 @@
 
 use super::projection::{Projected, Screen, MARGIN};
 
-/// Inclusive rectangle; `first_column > last_column` means empty (never entered). Beyond the
-/// thesis, also the silhouette's range along both diagonals (`column + row`, and
-/// `column − row + height − 1`), which makes the extent an octagon: 5% larger than a disc
-/// instead of 27%, and tight around thin oblique objects.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-pub struct Extent {
-    pub first_column: u16,
-    pub last_column: u16,
-    pub first_row: u16,
-    pub last_row: u16,
-    pub diagonal: [u16; 4],
-}
+pub use crate::model::Extent;
 
 impl Extent {
-    pub const EMPTY: Self = Self { first_column: 1, last_column: 0, first_row: 1, last_row: 0, diagonal: [1, 0, 1, 0] };
-
     pub fn whole(screen: &Screen) -> Self {
         Self { first_column: 0, last_column: screen.width - 1, first_row: 0, last_row: screen.height - 1, diagonal: [0, u16::MAX, 0, u16::MAX] }
-    }
-
-    /// Whether the pixel lies within the diagonal ranges.
-    #[inline]
-    pub fn diagonals_contain(&self, column: u16, row: u16, height: u16) -> bool {
-        let sum = u32::from(column) + u32::from(row);
-        let difference = u32::from(column) + u32::from(height - 1) - u32::from(row);
-        // Destructured, not `map`ped: `array::map` compiled to a loop through the stack.
-        let [s1, s2, d1, d2] = self.diagonal;
-        let (s1, s2, d1, d2) = (u32::from(s1), u32::from(s2), u32::from(d1), u32::from(d2));
-        sum >= s1 && sum <= s2 && difference >= d1 && difference <= d2
     }
 
     /// The rectangle of projected points (with the projection margin), or the whole screen for
@@ -70,31 +46,5 @@ impl Extent {
             }
             _ => Self::EMPTY,
         }
-    }
-
-    /// The inclusive column span of `row` within the octagon (the rectangle cut by the two
-    /// diagonal ranges); `None` when the row misses it. Integer arithmetic only: this is
-    /// Pixelbuffer's fill (`optimize::pixelbuffer`).
-    #[inline]
-    pub fn row_span(&self, row: u16, height: u16) -> Option<(u16, u16)> {
-        if row < self.first_row || row > self.last_row || self.first_column > self.last_column {
-            return None;
-        }
-        let (row, offset) = (i32::from(row), i32::from(height) - 1);
-        let [s1, s2, d1, d2] = self.diagonal;
-        let (s1, s2, d1, d2) = (i32::from(s1), i32::from(s2), i32::from(d1), i32::from(d2));
-        // s1 ≤ column + row ≤ s2 and d1 ≤ column − row + height − 1 ≤ d2.
-        let first = i32::from(self.first_column).max(s1 - row).max(d1 + row - offset);
-        let last = i32::from(self.last_column).min(s2 - row).min(d2 + row - offset);
-        (first <= last).then(|| (first.clamp(0, 65535) as u16, last.clamp(0, 65535) as u16))
-    }
-
-    #[inline]
-    pub fn contains(&self, column: u16, row: u16) -> bool {
-        column >= self.first_column && column <= self.last_column && row >= self.first_row && row <= self.last_row
-    }
-
-    pub fn is_empty(&self) -> bool {
-        self.first_column > self.last_column || self.first_row > self.last_row
     }
 }

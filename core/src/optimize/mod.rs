@@ -17,6 +17,8 @@ pub mod grid;
 pub mod pixelbuffer;
 pub mod projection;
 pub mod shadow_culling;
+#[cfg(feature = "csg")]
+pub mod solid_extents;
 pub mod space_grid;
 pub mod sortlist;
 

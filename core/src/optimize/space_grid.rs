@@ -58,7 +58,7 @@ impl<C: Config> Clone for SpaceGrid<C> {
 
 impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S> SpaceGrid<Arrays<N, K, O, POOL, DEPTH, ROW, S>>
 where
-    S: core::ops::Deref<Target = [crate::model::PreparedSolidNode<N>]> + Default + 'static,
+    S: crate::config::SolidStorage<N> + 'static,
 {
     pub const NONE: Self = Self {
         resolution: 0,

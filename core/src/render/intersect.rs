@@ -4,6 +4,7 @@
 
 use super::Statistics;
 use crate::config::Config;
+use crate::camera::PixelPosition;
 use crate::geometry::{Ray, Vector3};
 use crate::model::Object;
 use crate::number::Number;
@@ -28,7 +29,8 @@ pub struct NearestHit<N> {
 pub const NO_LEAF: u16 = u16::MAX;
 
 /// The nearest hit on `object` (number `index`) inside `interval`: `world` is the ray, `local`
-/// the same in the object's space (a primitive's; a solid works from `world`). The caller makes
+/// the same in the object's space (a primitive's; a solid works from `world`); `pixel`, a
+/// primary ray's. The caller makes
 /// `local` as it always did: made here, behind the solid's branch, it cost the Cortex-M4F's
 /// unoptimized snooker frame 14 % (the transform no longer inlined).
 #[inline(always)]
@@ -40,15 +42,22 @@ pub(crate) fn hit_object<N: Number, C: Config<Number = N>>(
     world: &Ray<N>,
     local: &Ray<N>,
     interval: Interval<N>,
+    pixel: Option<PixelPosition>,
     statistics: &mut Statistics,
 ) -> Option<NearestHit<N>> {
     #[cfg(feature = "csg")]
     if let crate::model::Primitive::Solid(_) = object.primitive {
-        let hit = crate::csg::first_hit(scene.solid(object.primitive), world, interval, &mut statistics.solid_leaf_tests)?;
+        // A primary ray with Extents on skips each part of the solid whose extent excludes its
+        // pixel (§3.3.6).
+        let acceleration = &scene.acceleration;
+        let pixel = pixel.filter(|_| acceleration.optimizations().extents);
+        let height = acceleration.screen().height;
+        let prune = |extent: &crate::model::Extent| pixel.is_some_and(|pixel| !extent.covers(pixel.column, pixel.row, height));
+        let hit = crate::csg::first_hit::<N, C::Solids>(scene.solid(object.primitive), world, interval, prune, &mut statistics.solid_leaf_tests)?;
         return Some(NearestHit { object: index, t: hit.t, local_normal: hit.normal, leaf: hit.leaf });
     }
     #[cfg(not(feature = "csg"))]
-    let _ = (scene, world, statistics);
+    let _ = (scene, world, pixel, statistics);
     let hit = object.primitive.intersect(local, interval)?;
     Some(NearestHit {
         object: index,
@@ -64,7 +73,7 @@ pub(crate) fn hit_object<N: Number, C: Config<Number = N>>(
 pub(crate) fn object_occludes<N: Number, C: Config<Number = N>>(scene: &Prepared<C>, object: &Object<N>, world: &Ray<N>, interval: Interval<N>, statistics: &mut Statistics) -> bool {
     #[cfg(feature = "csg")]
     if let crate::model::Primitive::Solid(_) = object.primitive {
-        return crate::csg::occluded(scene.solid(object.primitive), world, interval, &mut statistics.solid_leaf_tests);
+        return crate::csg::occluded::<N, C::Solids>(scene.solid(object.primitive), world, interval, &mut statistics.solid_leaf_tests);
     }
     #[cfg(not(feature = "csg"))]
     let _ = (scene, statistics);

@@ -30,7 +30,7 @@ pub(crate) fn nearest_secondary_hit<N: Number, C: Config<Number = N>>(
         // Objects come in order, so an equal t never replaces an earlier object.
         let interval = nearest.map_or(Interval::unbounded(), |best| Interval::below(best.t));
         statistics.secondary_tests += 1;
-        if let Some(hit) = hit_object(scene, index, object, ray, &object.object_from_world.ray(ray), interval, statistics) {
+        if let Some(hit) = hit_object(scene, index, object, ray, &object.object_from_world.ray(ray), interval, None, statistics) {
             nearest = Some(hit);
         }
     }
@@ -50,7 +50,7 @@ fn nearest_in_grid<N: Number, C: Config<Number = N>>(scene: &Prepared<C>, ray: &
                     Some(best) => Interval { max: best.t, include_max: index < best.object },
                 };
                 statistics.secondary_tests += 1;
-                if let Some(hit) = hit_object(scene, index, object, ray, &object.object_from_world.ray(ray), interval, statistics) {
+                if let Some(hit) = hit_object(scene, index, object, ray, &object.object_from_world.ray(ray), interval, None, statistics) {
                     nearest = Some(hit);
                 }
             }

@@ -110,12 +110,18 @@ pub fn write_prepared_ahead<N: Number, C: Config<Number = N>>(scene: &Prepared<C
     writeln!(out, "pub static SOLID_NODES_AHEAD: [microtrace::model::PreparedSolidNode<Number>; {}] = [", solids.len())?;
     for node in solids {
         match node {
-            crate::model::PreparedSolidNode::Leaf { object, skip_to } => {
+            crate::model::PreparedSolidNode::Leaf { object, skip_to, top, extent } => {
                 write!(out, "    microtrace::model::PreparedSolidNode::Leaf {{ object: ")?;
                 object_literal(object, out)?;
-                writeln!(out, ", skip_to: {skip_to} }},")?;
+                write!(out, ", skip_to: {skip_to}, top: {top}, extent: ")?;
+                extent_literal(extent, out)?;
+                writeln!(out, " }},")?;
             }
-            crate::model::PreparedSolidNode::Combine(operation) => writeln!(out, "    microtrace::model::PreparedSolidNode::Combine(microtrace::model::Operation::{operation:?}),")?,
+            crate::model::PreparedSolidNode::Combine { operation, left, extent } => {
+                write!(out, "    microtrace::model::PreparedSolidNode::Combine {{ operation: microtrace::model::Operation::{operation:?}, left: {left}, extent: ")?;
+                extent_literal(extent, out)?;
+                writeln!(out, " }},")?;
+            }
         }
     }
     writeln!(out, "];")?;
@@ -304,4 +310,10 @@ fn primitive_path(primitive: Primitive, out: &mut dyn Write) -> fmt::Result {
         Primitive::Solid(range) => write!(out, "microtrace::model::Primitive::Solid(microtrace::model::SolidRange {{ first: {}, count: {} }})", range.first, range.count),
         other => write!(out, "microtrace::model::Primitive::{other:?}"),
     }
+}
+
+/// A screen extent as a Rust expression.
+fn extent_literal(extent: &crate::model::Extent, out: &mut dyn Write) -> fmt::Result {
+    let crate::model::Extent { first_column, last_column, first_row, last_row, diagonal } = extent;
+    write!(out, "microtrace::model::Extent {{ first_column: {first_column}, last_column: {last_column}, first_row: {first_row}, last_row: {last_row}, diagonal: {diagonal:?} }}")
 }

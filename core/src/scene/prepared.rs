@@ -28,7 +28,9 @@ use crate::model::{Palette, Rgb4};
 use crate::shading::ShadingConstants;
 use crate::model::PreparedSolidNode;
 #[cfg(feature = "csg")]
-use crate::model::{MAX_SOLID_NODES, NO_SKIP};
+use crate::model::{Extent, MAX_SOLID_NODES, NO_SKIP};
+#[cfg(feature = "csg")]
+use crate::optimize::{capsule::ScreenMap, ObjectBounds};
 
 /// Adaptive antialiasing as the render needs it (thesis fig 2.9): the image's viewport, the
 /// subdivision levels L and the threshold on an 8-bit channel's range over a square's corners.
@@ -137,7 +139,7 @@ impl<C: Config> core::fmt::Debug for Prepared<C> {
 
 impl<N: Number + 'static, const MAX_OBJECTS: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S> Prepared<Arrays<N, MAX_OBJECTS, O, POOL, DEPTH, ROW, S>>
 where
-    S: core::ops::Deref<Target = [crate::model::PreparedSolidNode<N>]> + Default + 'static,
+    S: crate::config::SolidStorage<N> + 'static,
 {
     /// Every byte zero but the objects' (`objects`; the firmware's, in flash, take none): the
     /// value of a scene to be prepared in place. The firmware keeps its scene in a `static` of
@@ -378,8 +380,8 @@ impl<N: Number, C: Config<Number = N>> Prepared<C>
 where
     C::Solids: List<PreparedSolidNode<N>>,
 {
-    /// The solids' nodes in the number type, in the description's order, each solid's skips
-    /// linked (`csg::solid`).
+    /// The solids' nodes in the number type, in the description's order, each solid's nodes
+    /// linked (`csg::solid`) and their screen extents set for the view (§3.3.6).
     fn prepare_solids<L>(&mut self, description: &Description<L>, descriptions: &[ObjectDescription], origins: &RayOrigins) -> Result<(), SceneError> {
         self.solid_nodes.clear();
         for node in &description.solids {
@@ -388,9 +390,9 @@ where
                     if !leaf.primitive.is_compiled() {
                         return Err(SceneError { line: leaf.line, kind: SceneErrorKind::PrimitiveNotCompiled { primitive: leaf.primitive.name() } });
                     }
-                    PreparedSolidNode::Leaf { object: prepare_object::<N>(leaf, origins)?, skip_to: NO_SKIP }
+                    PreparedSolidNode::Leaf { object: prepare_object::<N>(leaf, origins)?, skip_to: NO_SKIP, top: 0, extent: Extent::EVERYWHERE }
                 }
-                crate::model::SolidNode::Combine { operation, .. } => PreparedSolidNode::Combine(*operation),
+                crate::model::SolidNode::Combine { operation, .. } => PreparedSolidNode::Combine { operation: *operation, left: 0, extent: Extent::EVERYWHERE },
             };
             self.solid_nodes.push(prepared).map_err(|_| SceneError {
                 line: 0,
@@ -399,10 +401,16 @@ where
         }
         for object in descriptions {
             if let crate::model::Primitive::Solid(range) = object.primitive {
-                let linked = self.solid_nodes.get_mut(range.nodes()).and_then(|nodes| crate::csg::solid::link_skips(nodes));
-                if linked.is_none() {
+                let Some(nodes) = self.solid_nodes.get_mut(range.nodes()).and_then(|nodes| crate::csg::solid::link_nodes(nodes).map(|()| nodes)) else {
                     return Err(SceneError { line: object.line, kind: SceneErrorKind::SolidTooComplex { what: "nodes in one tree", needs: usize::from(range.count), capacity: MAX_SOLID_NODES } });
-                }
+                };
+                // The screen extents as the view sees them (§3.3.6), from each leaf's capsule.
+                let leaves = description.solids.get(range.nodes()).unwrap_or(&[]);
+                let capsule_of = |place: usize| match leaves.get(place) {
+                    Some(crate::model::SolidNode::Leaf(leaf)) => ObjectBounds::<N>::of(leaf).map(|bounds| bounds.capsule),
+                    _ => None,
+                };
+                crate::optimize::solid_extents::set_solid_extents(&ScreenMap::new(&self.camera), nodes, capsule_of);
             }
         }
         Ok(())

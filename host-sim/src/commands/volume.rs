@@ -82,7 +82,7 @@ pub fn object_volume(object: &ObjectDescription, nodes: &[PreparedSolidNode<f64>
             let world = Ray { origin: Vector3::new(x, y, start_z), direction: Vector3::new(0.0, 0.0, -1.0) };
             let depth = |spans: &[Span<f64>]| spans.iter().map(|span| span.exit.t - span.enter.t).sum();
             depths[row * n + column] = match object.primitive {
-                Primitive::Solid(_) => solid_spans(nodes, &world, &mut 0, depth).context("the solid's spans overflow their capacity")?,
+                Primitive::Solid(_) => solid_spans::<_, crate::heap::Growing<PreparedSolidNode<f64>>, _>(nodes, &world, |_| false, &mut 0, depth).context("the solid's spans overflow their capacity")?,
                 primitive => depth(
                     microtrace::csg::leaf_spans(primitive, &object_from_world.ray(&world), 0)
                         .map_err(|overflow| anyhow::anyhow!("more than {} spans along a ray", overflow.capacity))?
