@@ -136,10 +136,11 @@ enum Board {
     Mps2An386,
     Microbit,
     Mps2An505,
+    Lm3s811evb,
 }
 
 impl Board {
-    const ALL: [Board; 4] = [Board::Lm3s6965evb, Board::Mps2An386, Board::Microbit, Board::Mps2An505];
+    const ALL: [Board; 5] = [Board::Lm3s6965evb, Board::Mps2An386, Board::Microbit, Board::Mps2An505, Board::Lm3s811evb];
 
     /// The board's cargo feature.
     fn name(self) -> &'static str {
@@ -148,6 +149,7 @@ impl Board {
             Board::Mps2An386 => "mps2-an386",
             Board::Microbit => "microbit",
             Board::Mps2An505 => "mps2-an505",
+            Board::Lm3s811evb => "lm3s811evb",
         }
     }
 
@@ -160,7 +162,7 @@ impl Board {
     /// `cfg(armv8m)` for src/fault.rs (each has its own MPU, or none, and fault registers).
     fn architecture(self) -> &'static str {
         match self {
-            Board::Lm3s6965evb | Board::Mps2An386 => "armv7m",
+            Board::Lm3s6965evb | Board::Mps2An386 | Board::Lm3s811evb => "armv7m",
             Board::Microbit => "armv6m",
             Board::Mps2An505 => "armv8m",
         }

@@ -13,7 +13,7 @@
 use core::fmt::Debug;
 use core::marker::PhantomData;
 
-use crate::model::{Object, Objects, PreparedSolidNode, MAX_DEPTH, MAX_HELD_SPANS, MAX_LIGHTS, MAX_SOLID_NODES, MAX_SOLID_STACK, MAX_SPANS};
+use crate::model::{Object, Objects, Palette, PreparedSolidNode, MAX_DEPTH, MAX_HELD_SPANS, MAX_LIGHTS, MAX_SOLID_NODES, MAX_SOLID_STACK, MAX_SPANS};
 use crate::number::Number;
 use crate::storage::{Index, List, Table};
 
@@ -28,6 +28,8 @@ pub trait Config: 'static {
     /// Where the solids' prepared nodes live (the scene's own list, or the firmware's in flash,
     /// exactly its scene's), and the capacities of a ray's walk through them.
     type Solids: SolidStorage<Self::Number>;
+    /// Where the scene's look-up table lives (the scene's own copy, or the firmware's in flash).
+    type Palette: PaletteStorage;
     /// One `T` per object.
     type PerObject<T: Copy>: Table<T>;
     /// One `T` per object for each light after the first ([`MAX_LIGHTS`]` − 1` tables of
@@ -79,6 +81,39 @@ pub trait SolidStorage<N>: core::ops::Deref<Target = [PreparedSolidNode<N>]> + D
     type Lists<T: Clone>: List<T>;
 }
 
+/// Where a build keeps the scene's look-up table: the scene's own copy ([`OwnedPalette`], a
+/// host's and the tests'), or the firmware's in flash, written at build time from the same
+/// scene (it then takes none of the chip's RAM: 768 bytes).
+pub trait PaletteStorage: core::ops::Deref<Target = Palette> + Default {
+    /// Holds `palette` from now on. A table in flash already holds it (written from the same
+    /// scene) and keeps it.
+    fn hold(&mut self, palette: &Palette);
+}
+
+/// A look-up table of the scene's own.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub struct OwnedPalette(pub Palette);
+
+impl OwnedPalette {
+    /// Every entry black: the value of a scene not yet prepared.
+    pub const BLACK: Self = Self(Palette { entries: [crate::model::Rgb4 { r: 0, g: 0, b: 0 }; 256] });
+}
+
+impl core::ops::Deref for OwnedPalette {
+    type Target = Palette;
+
+    #[inline(always)]
+    fn deref(&self) -> &Palette {
+        &self.0
+    }
+}
+
+impl PaletteStorage for OwnedPalette {
+    fn hold(&mut self, palette: &Palette) {
+        self.0 = *palette;
+    }
+}
+
 /// The scene's own list of nodes, walked with the format's limits.
 impl<N, const K: usize> SolidStorage<N> for heapless::Vec<PreparedSolidNode<N>, K> {
     type HeldSpans<T: Clone> = heapless::Vec<T, MAX_HELD_SPANS>;
@@ -99,7 +134,7 @@ pub const DEFAULT_ANTIALIAS_ROW: usize = 2049;
 
 /// Every table an array of a capacity fixed at compile time: `K` objects (kept in `O`),
 /// `POOL` grid entries per object, a ray tree `DEPTH` deep and antialiasing rows of `ROW`
-/// corners, the solids' nodes in `S`. The firmware's scene is one (sized by its scene), and so
+/// corners, the solids' nodes in `S`, the look-up table in `P`. The firmware's scene is one (sized by its scene), and so
 /// are the tests'.
 pub struct Arrays<
     N,
@@ -109,24 +144,27 @@ pub struct Arrays<
     const DEPTH: usize = DEFAULT_TREE_DEPTH,
     const ROW: usize = DEFAULT_ANTIALIAS_ROW,
     S = heapless::Vec<PreparedSolidNode<N>, MAX_SOLID_NODES>,
->(PhantomData<(N, O, S)>);
+    P = OwnedPalette,
+>(PhantomData<(N, O, S, P)>);
 
-impl<N, const K: usize, O, const POOL: usize, const DEPTH: usize, const ROW: usize, S> Debug for Arrays<N, K, O, POOL, DEPTH, ROW, S> {
+impl<N, const K: usize, O, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P> Debug for Arrays<N, K, O, POOL, DEPTH, ROW, S, P> {
     fn fmt(&self, formatter: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         write!(formatter, "Arrays<{K} objects, {POOL} grid entries each, depth {DEPTH}, row {ROW}>")
     }
 }
 
-impl<N, const K: usize, O, const POOL: usize, const DEPTH: usize, const ROW: usize, S> Config for Arrays<N, K, O, POOL, DEPTH, ROW, S>
+impl<N, const K: usize, O, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P> Config for Arrays<N, K, O, POOL, DEPTH, ROW, S, P>
 where
     N: Number + 'static,
     O: Objects<N> + 'static,
     S: SolidStorage<N> + 'static,
+    P: PaletteStorage + 'static,
 {
     type Number = N;
     type Index = u16;
     type Objects = O;
     type Solids = S;
+    type Palette = P;
     type PerObject<T: Copy> = [T; K];
     type PerObjectPerOtherLight<T: Copy> = [[T; K]; MAX_LIGHTS - 1];
     type PerObjectList<T: Clone> = heapless::Vec<T, K>;

@@ -47,9 +47,9 @@ use display::FramebufferAndDisplay;
 use display::StreamedRows;
 use semihosting::{print, HostFile};
 
-/// Sized by the scene: exactly its objects, which stay in flash; its grid's entries, its ray
-/// tree's depth and its row of antialiasing corners.
-type PreparedScene = Prepared<Arrays<scene::Number, { scene::OBJECT_COUNT }, FlashObjects, { scene::GRID_ENTRIES_PER_OBJECT }, { scene::TREE_DEPTH }, { scene::ANTIALIAS_ROW }, FlashSolids>>;
+/// Sized by the scene: exactly its objects, which stay in flash with its solids and its look-up
+/// table; its grid's entries, its ray tree's depth and its row of antialiasing corners.
+type PreparedScene = Prepared<Arrays<scene::Number, { scene::OBJECT_COUNT }, FlashObjects, { scene::GRID_ENTRIES_PER_OBJECT }, { scene::TREE_DEPTH }, { scene::ANTIALIAS_ROW }, FlashSolids, FlashPalette>>;
 
 /// The scene's objects in flash, where the build put them prepared ahead (`OBJECTS_AHEAD`):
 /// they take no RAM (only each object's eye, which depends on the view, is in the scene).
@@ -76,6 +76,24 @@ impl core::ops::Deref for FlashSolids {
     }
 }
 
+/// The look-up table in flash, where the build wrote it (`PALETTE_AHEAD`): 768 bytes that
+/// stay out of RAM.
+#[derive(Clone, Copy, Debug, Default)]
+struct FlashPalette;
+
+impl core::ops::Deref for FlashPalette {
+    type Target = microtrace::model::Palette;
+
+    fn deref(&self) -> &Self::Target {
+        &scene::PALETTE_AHEAD
+    }
+}
+
+/// Written from the same scene at build time: it holds what preparation would give it.
+impl microtrace::config::PaletteStorage for FlashPalette {
+    fn hold(&mut self, _palette: &microtrace::model::Palette) {}
+}
+
 /// A ray's walk through a solid holds exactly the lists the scene's solids need (none without
 /// solids), on the stack.
 impl microtrace::config::SolidStorage<scene::Number> for FlashSolids {
@@ -89,7 +107,7 @@ fn main() -> ! {
     // The prepared scene (objects, acceleration structures) is static RAM, zero-initialised
     // and prepared in place: returned by value it would pass through the stack. (cortex-m-rt
     // makes an entry's `static mut` a `&'static mut`.)
-    static mut SCENE: PreparedScene = PreparedScene::unprepared(FlashObjects, FlashSolids);
+    static mut SCENE: PreparedScene = PreparedScene::unprepared(FlashObjects, FlashSolids, FlashPalette);
     // From here on an access outside the flash, the RAM and the peripherals faults, and so does
     // the stack running off the bottom of RAM (src/fault.rs).
     mpu::protect_memory();

@@ -42,8 +42,8 @@ const TABLES_PER_OBJECT: usize = size_of::<DirectionChord<scene::Number>>()
     + if scene::LIGHT_COUNT > 1 { (MAX_LIGHTS - 1) * (size_of::<DirectionChord<scene::Number>>() + size_of::<BlockerSet>()) } else { 0 };
 
 /// The frames below the tables: preparing's, the row's and the pixel's (the report's deepest
-/// stack beyond the tables is about 3 KB).
-const STACK_BASE_BYTES: usize = 4 * 1024;
+/// stack beyond the tables is about 3 KB): 4 KB, less on a board whose RAM cannot spare it.
+const STACK_BASE_BYTES: usize = crate::board::STACK_BASE_BYTES;
 
 /// The budget's peak stack: the least the check keeps (12 KB; 6 KB on the 16 KB micro:bit).
 const STACK_BUDGET_BYTES: usize = crate::board::STACK_BUDGET_BYTES;

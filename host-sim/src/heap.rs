@@ -96,6 +96,7 @@ impl<N: Number> Config for Heap<N> {
     type Index = u32;
     type Objects = Growing<Object<N>>;
     type Solids = Growing<PreparedSolidNode<N>>;
+    type Palette = microtrace::config::OwnedPalette;
     type PerObject<T: Copy> = Boxed<T>;
     type PerObjectPerOtherLight<T: Copy> = Boxed<T>;
     type PerObjectList<T: Clone> = Growing<T>;

@@ -100,7 +100,7 @@ where
     assert!(scene.optimizations.pixelbuffer, "the test wants the Pixelbuffer's fill marks in the framebuffer");
     let mut pixels = vec![0u8; usize::from(width) * usize::from(height)];
     let frame = FrameBuffer::new(&mut pixels, width, height).unwrap();
-    assert_eq!(scene.palette, description.palette);
+    assert_eq!(*scene.palette, description.palette);
     let mut sink = RowDisplaySink::new(frame, target, map);
     render(&scene, Pga, Whole, &mut sink, &mut Statistics::default());
     assert_eq!(sink.failed_rows, 0);

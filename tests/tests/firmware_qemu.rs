@@ -214,10 +214,11 @@ fn linked_code_is_clean(name: &str, board: Board, numbers: &std::collections::BT
     for key in ["f64_symbols", "panic_symbols", "fmt_symbols"] {
         assert_eq!(numbers[key], 0, "{name} on {}: {key} (see linked-audit.txt)", board.name());
     }
-    // And the stack never reached the end of its region (a 4 KB margin): an overflow would run
-    // into the statics.
+    // And the stack never reached the end of its region (a 4 KB margin; 256 bytes on the 8 KB
+    // lm3s811evb, whose whole stack is 3.4 KB): an overflow would run into the statics.
     let (peak, size) = (numbers["stack_peak_bytes"], numbers["stack_size_bytes"]);
-    assert!(peak + 4096 <= size, "{name} on {}: peak stack {peak} of the {size} bytes there are", board.name());
+    let margin = if board == Board::Lm3s811evb { 256 } else { 4096 };
+    assert!(peak + margin <= size, "{name} on {}: peak stack {peak} of the {size} bytes there are", board.name());
 }
 
 /// The ray tree on the firmware (chapter 5): the polished snooker scene, built with the
@@ -355,6 +356,18 @@ fn the_glass_lens_on_mps2_an386_matches_the_host() {
 #[test]
 fn the_nut_in_soft32_on_lm3s6965evb_matches_the_host() {
     firmware_matches_host_in::<microtrace::number::SoftFloat>("csg/nut.mts", Board::Lm3s6965evb);
+}
+
+/// The smallest board (issue 25, "The smallest chips"): the lm3s811evb, a Cortex-M3 with 64 KB
+/// of flash and 8 KB of RAM, renders snooker at 128x64 in `f32` (a type that meets fixed's
+/// accuracy targets: tests/tests/thesis_scenes.rs), streamed to the host, the host's picture
+/// byte for byte, within its memory as the build measured it.
+#[test]
+fn snooker_fits_the_lm3s811evb() {
+    let (run, _) = firmware_picture_matches_host_in::<f32>("snooker.mts", Board::Lm3s811evb);
+    let (ram, stack, flash) = (run.numbers["static_ram_bytes"], run.numbers["stack_peak_bytes"], run.numbers["flash_bytes"]);
+    assert!(ram + stack <= 8 * 1024, "snooker on the lm3s811evb: {ram} bytes of static RAM and {stack} of peak stack exceed its 8,192");
+    assert!(flash <= 64 * 1024, "snooker on the lm3s811evb: {flash} bytes of flash exceed its 65,536");
 }
 
 #[test]

@@ -8,7 +8,7 @@ use xtask::report::ReportFilter;
 
 fn usage() -> &'static str {
     "usage:
-  cargo xtask firmware [--scene FILE] [--board lm3s6965evb|mps2-an386|microbit|mps2-an505] [--number f64|f32|fixed|fixed16|f32-micromath|soft32]
+  cargo xtask firmware [--scene FILE] [--board lm3s6965evb|mps2-an386|microbit|mps2-an505|lm3s811evb] [--number f64|f32|fixed|fixed16|f32-micromath|soft32]
                        [--opt scene|all|none|pixelbuffer,extents,grid,sortlist] [--out DIR]
                        [--timeout SECONDS] [--stack-reserve BYTES] [--progressive] [--framebuffer]
                        [--provoke panic|hard-fault|unexpected-interrupt|stack-overflow]
@@ -17,7 +17,8 @@ fn usage() -> &'static str {
       (default firmware/target/run/BOARD-SCENE-NUMBER). --provoke builds the fault test, which
       does that before preparing the scene: the run fails with the firmware's message.
       --stack-reserve: the stack the build's RAM check keeps free (default: 4 KB plus the
-                       render's shadow tables per object, at least 12288; firmware/src/ram.rs).
+                       render's shadow tables per object, at least 12288; on the 8 KB
+                       lm3s811evb 1.5 KB plus the tables, at least 3072; firmware/src/ram.rs).
       --progressive renders coarse to fine (8x8 blocks, then 4x4, 2x2, every pixel): the same
       image, the rays of each pass reported. --framebuffer builds the framebuffer render (the
       picture in an 8 KB RAM framebuffer) instead of the streamed one (rows sent as they are done).
@@ -61,7 +62,7 @@ fn report_filter(arguments: &[String]) -> Result<ReportFilter, String> {
             "--scene" => filter.scene = Some(value()?),
             "--board" => {
                 let name = value()?;
-                filter.board = Some(Board::from_name(&name).ok_or_else(|| format!("unknown board `{name}` (lm3s6965evb, mps2-an386, microbit or mps2-an505)"))?);
+                filter.board = Some(Board::from_name(&name).ok_or_else(|| format!("unknown board `{name}` (lm3s6965evb, mps2-an386, microbit, mps2-an505 or lm3s811evb)"))?);
             }
             "--number" => filter.number = Some(value()?),
             "--opt" => filter.optimizations = Some(value()?),
@@ -97,7 +98,7 @@ fn firmware_task(arguments: &[String]) -> Result<(), String> {
             "--scene" => scene = PathBuf::from(value()?),
             "--board" => {
                 let name = value()?;
-                board = Board::from_name(&name).ok_or_else(|| format!("unknown board `{name}` (lm3s6965evb, mps2-an386, microbit or mps2-an505)"))?;
+                board = Board::from_name(&name).ok_or_else(|| format!("unknown board `{name}` (lm3s6965evb, mps2-an386, microbit, mps2-an505 or lm3s811evb)"))?;
             }
             "--number" => number = value()?,
             "--opt" => optimizations = value()?,

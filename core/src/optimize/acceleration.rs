@@ -84,9 +84,10 @@ impl<C: Config> Clone for Acceleration<C> {
     }
 }
 
-impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S> Acceleration<Arrays<N, K, O, POOL, DEPTH, ROW, S>>
+impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P> Acceleration<Arrays<N, K, O, POOL, DEPTH, ROW, S, P>>
 where
     S: crate::config::SolidStorage<N> + 'static,
+    P: crate::config::PaletteStorage + 'static,
 {
     /// Every byte zero, nothing built: the value before [`Acceleration::rebuild`] (a `static`
     /// holding it costs zero-initialised RAM and no flash).

@@ -90,9 +90,10 @@ impl<C: Config> Clone for Grid<C> {
     }
 }
 
-impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S> Grid<Arrays<N, K, O, POOL, DEPTH, ROW, S>>
+impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P> Grid<Arrays<N, K, O, POOL, DEPTH, ROW, S, P>>
 where
     S: crate::config::SolidStorage<N> + 'static,
+    P: crate::config::PaletteStorage + 'static,
 {
     /// Every byte zero, inactive: the value before [`Grid::rebuild`] (a `static` holding it
     /// costs zero-initialised RAM and no flash).

@@ -56,9 +56,10 @@ impl<C: Config> Clone for SpaceGrid<C> {
     }
 }
 
-impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S> SpaceGrid<Arrays<N, K, O, POOL, DEPTH, ROW, S>>
+impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P> SpaceGrid<Arrays<N, K, O, POOL, DEPTH, ROW, S, P>>
 where
     S: crate::config::SolidStorage<N> + 'static,
+    P: crate::config::PaletteStorage + 'static,
 {
     pub const NONE: Self = Self {
         resolution: 0,

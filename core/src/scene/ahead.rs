@@ -15,7 +15,7 @@ use crate::optimize::ObjectBounds;
 use crate::model::{SceneError, SceneErrorKind};
 use crate::model::{Optimizations, Primitive, MAX_LIGHTS};
 use crate::light::{PreparedLight, PreparedLightSource};
-use crate::config::Config;
+use crate::config::{Config, PaletteStorage};
 #[cfg(feature = "ray-tree")]
 use crate::storage::List;
 use crate::scene::{Optics, Prepared, PreparedAntialias};
@@ -78,7 +78,7 @@ impl<N: Number, C: Config<Number = N>> Prepared<C> {
         self.shadows = parts.shadows;
         self.dither = parts.dither;
         self.optimizations = parts.optimizations;
-        self.palette = *parts.palette;
+        self.palette.hold(parts.palette);
         // The objects are the scene's own (the firmware's in flash, `OBJECTS_AHEAD`): only their
         // eyes are placed, as they depend on the view.
         if self.objects.len() > C::MAX_OBJECTS {

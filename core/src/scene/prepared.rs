@@ -11,7 +11,7 @@ use crate::model::{Object, Objects, PreparedMaterial};
 use heapless::Vec;
 
 use crate::camera::Camera;
-use crate::config::{Arrays, Config};
+use crate::config::{Arrays, Config, OwnedPalette, PaletteStorage};
 use crate::storage::{List, Table};
 use crate::geometry::{AffineTransform, Vector3};
 use crate::light::{PreparedLight, PreparedLightSource};
@@ -24,7 +24,6 @@ use crate::optimize::{Acceleration, Tuning};
 use crate::model::{SceneError, SceneErrorKind};
 use crate::scene::range::{self, RayOrigins};
 use crate::model::{Antialias, Description, ObjectDescription, Optimizations, Viewport, Window, MAX_LIGHTS};
-use crate::model::{Palette, Rgb4};
 use crate::shading::ShadingConstants;
 use crate::model::PreparedSolidNode;
 #[cfg(feature = "csg")]
@@ -122,7 +121,8 @@ pub struct Prepared<C: Config> {
     pub shadows: bool,
     pub dither: bool,
     pub optimizations: Optimizations,
-    pub palette: Palette,
+    /// The look-up table (`Config::Palette`: in flash on the firmware).
+    pub palette: C::Palette,
     /// What the optimizations derived from the objects' bounding volumes (§4.7).
     pub acceleration: Acceleration<C>,
     /// Every solid's nodes, prepared (`csg::solid`): a solid object's `Primitive::Solid` range
@@ -137,16 +137,17 @@ impl<C: Config> core::fmt::Debug for Prepared<C> {
     }
 }
 
-impl<N: Number + 'static, const MAX_OBJECTS: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S> Prepared<Arrays<N, MAX_OBJECTS, O, POOL, DEPTH, ROW, S>>
+impl<N: Number + 'static, const MAX_OBJECTS: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P> Prepared<Arrays<N, MAX_OBJECTS, O, POOL, DEPTH, ROW, S, P>>
 where
     S: crate::config::SolidStorage<N> + 'static,
+    P: crate::config::PaletteStorage + 'static,
 {
     /// Every byte zero but the objects' (`objects`; the firmware's, in flash, take none): the
     /// value of a scene to be prepared in place. The firmware keeps its scene in a `static` of
     /// this value (zero-initialised RAM, no flash) and prepares it there: a scene returned by
     /// value would pass through the stack. `solids`: where its solids' nodes are (unused
-    /// without the `csg` feature).
-    pub const fn unprepared(objects: O, solids: S) -> Self {
+    /// without the `csg` feature); `palette`: where its look-up table is.
+    pub const fn unprepared(objects: O, solids: S, palette: P) -> Self {
         #[cfg(not(feature = "csg"))]
         core::mem::forget(solids);
         Self {
@@ -179,7 +180,7 @@ where
             shadows: false,
             dither: false,
             optimizations: Optimizations::NONE,
-            palette: Palette { entries: [Rgb4 { r: 0, g: 0, b: 0 }; 256] },
+            palette,
             acceleration: Acceleration::UNSET,
             #[cfg(feature = "csg")]
             solid_nodes: solids,
@@ -190,7 +191,7 @@ where
 impl<N: Number + 'static, const MAX_OBJECTS: usize, const POOL: usize, const DEPTH: usize, const ROW: usize> Prepared<Arrays<N, MAX_OBJECTS, Vec<Object<N>, MAX_OBJECTS>, POOL, DEPTH, ROW>> {
     /// Every byte zero, no objects: the value of a scene to be prepared in place
     /// ([`Scene::unprepared`] with no objects).
-    pub const UNPREPARED: Self = Self::unprepared(Vec::new(), Vec::new());
+    pub const UNPREPARED: Self = Self::unprepared(Vec::new(), Vec::new(), OwnedPalette::BLACK);
 }
 
 impl<N: Number, C: Config<Number = N>> Prepared<C> {
@@ -219,7 +220,7 @@ impl<N: Number, C: Config<Number = N>> Prepared<C> {
             shadows: false,
             dither: false,
             optimizations: Optimizations::NONE,
-            palette: Palette { entries: [Rgb4 { r: 0, g: 0, b: 0 }; 256] },
+            palette: C::Palette::default(),
             acceleration: Acceleration::unset(count),
             #[cfg(feature = "csg")]
             solid_nodes: C::Solids::default(),
@@ -280,7 +281,7 @@ where
         self.shadows = description.shadows;
         self.dither = description.dither;
         self.optimizations = description.optimizations;
-        self.palette = description.palette;
+        self.palette.hold(&description.palette);
         self.prepare_objects(description, descriptions)
     }
 

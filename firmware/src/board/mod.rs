@@ -24,3 +24,8 @@ pub use microbit::*;
 mod mps2_an505;
 #[cfg(feature = "mps2-an505")]
 pub use mps2_an505::*;
+
+#[cfg(feature = "lm3s811evb")]
+mod lm3s811evb;
+#[cfg(feature = "lm3s811evb")]
+pub use lm3s811evb::*;

@@ -20,3 +20,6 @@ pub fn hold_picture_for_capture() -> bool {
 /// other boards' 12 KB beside a scene; snooker's deepest stack measured 4.5 KB in every number
 /// type (docs/firmware-report.json), so 6 KB.
 pub const STACK_BUDGET_BYTES: usize = 6 * 1024;
+
+/// The frames below the shadow tables the RAM check counts (src/ram.rs): the common 4 KB.
+pub const STACK_BASE_BYTES: usize = 4 * 1024;

@@ -22,3 +22,6 @@ pub const PERIPHERALS: (u32, u32) = (0x5000_0000, 1 << 20);
 
 /// The stack the RAM check keeps at the least (src/ram.rs): the budget's 12 KB.
 pub const STACK_BUDGET_BYTES: usize = 12 * 1024;
+
+/// The frames below the shadow tables the RAM check counts (src/ram.rs): the common 4 KB.
+pub const STACK_BASE_BYTES: usize = 4 * 1024;
