@@ -396,3 +396,94 @@ mod tests {
         }
     }
 }
+
+/// One symbol in flash: its demangled name, its bytes and its area ([`area`]).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct FlashSymbol {
+    pub demangled: String,
+    pub bytes: u64,
+    pub area: String,
+}
+
+/// Each area's flash bytes, largest first.
+pub type FlashAreas = Vec<(String, u64)>;
+
+/// Where the flash goes, `cargo bloat`'s way: every sized symbol in a section that reaches flash
+/// (code, read-only data, `.data`'s initial values), largest first, and the bytes of each
+/// area; what no symbol covers (the vector table, alignment, unnamed constants) is the area
+/// `(no symbol)`.
+pub fn flash_symbols(elf: &[u8]) -> Result<(Vec<FlashSymbol>, FlashAreas), String> {
+    let file = object::File::parse(elf).map_err(|error| format!("not an ELF file: {error}"))?;
+    let in_flash = |index: object::SectionIndex| {
+        file.section_by_index(index).ok().is_some_and(|section| {
+            let SectionFlags::Elf { sh_flags } = section.flags() else { return false };
+            let nobits = matches!(section.kind(), object::SectionKind::UninitializedData | object::SectionKind::UninitializedTls);
+            sh_flags & SHF_ALLOC != 0 && !nobits
+        })
+    };
+    let mut symbols: Vec<FlashSymbol> = file
+        .symbols()
+        .filter(|symbol| symbol.size() > 0 && matches!(symbol.kind(), object::SymbolKind::Text | object::SymbolKind::Data))
+        .filter(|symbol| symbol.section_index().is_some_and(in_flash))
+        .filter_map(|symbol| {
+            let demangled = demangle(symbol.name().ok()?);
+            Some(FlashSymbol { area: area(&demangled), demangled, bytes: symbol.size() })
+        })
+        .collect();
+    symbols.sort_by(|a, b| b.bytes.cmp(&a.bytes).then_with(|| a.demangled.cmp(&b.demangled)));
+    let mut areas: std::collections::BTreeMap<String, u64> = std::collections::BTreeMap::new();
+    for symbol in &symbols {
+        *areas.entry(symbol.area.clone()).or_default() += symbol.bytes;
+    }
+    let named: u64 = areas.values().sum();
+    let flash = footprint(elf)?.flash_bytes();
+    areas.insert("(no symbol)".to_owned(), flash.saturating_sub(named));
+    let mut areas: Vec<(String, u64)> = areas.into_iter().collect();
+    areas.sort_by(|a, b| b.1.cmp(&a.1).then_with(|| a.0.cmp(&b.0)));
+    Ok((symbols, areas))
+}
+
+/// The module a symbol's code or data belongs to: the core's and the firmware's to their second
+/// level (`microtrace::number`, `microtrace::render`, `microtrace_firmware::scene`), anything
+/// else to its crate (`compiler_builtins`, `core`, `libm`); an implementation for a type goes to
+/// the type's module (`<microtrace::number::SoftFloat as core::ops::Add>::add` is
+/// `microtrace::number`).
+pub fn area(demangled: &str) -> String {
+    let path = demangled.trim_start_matches('<').trim_start_matches("impl ").trim_start_matches('&').trim_start_matches("mut ");
+    let path = path.split([' ', '<', '>', '(', ',']).next().unwrap_or(path);
+    let segments: Vec<&str> = path.split("::").collect();
+    match segments.as_slice() {
+        [krate @ ("microtrace" | "microtrace_firmware"), module, _, ..] => format!("{krate}::{module}"),
+        [krate, ..] if !krate.is_empty() && segments.len() > 1 => (*krate).to_owned(),
+        _ => "(other)".to_owned(),
+    }
+}
+
+/// `flash-by-function.txt`: the areas, then every symbol, largest first.
+pub fn flash_text(symbols: &[FlashSymbol], areas: &[(String, u64)]) -> String {
+    let total: u64 = areas.iter().map(|(_, bytes)| bytes).sum();
+    let mut text = format!("flash: {total} bytes\n\nby area:\n");
+    for (name, bytes) in areas {
+        text += &format!("{bytes:>8}  {name}\n");
+    }
+    text += "\nby symbol:\n";
+    for symbol in symbols {
+        text += &format!("{:>8}  {}\n", symbol.bytes, symbol.demangled);
+    }
+    text
+}
+
+#[cfg(test)]
+mod area_tests {
+    use super::area;
+
+    #[test]
+    fn a_symbol_goes_to_its_module_or_its_crate() {
+        assert_eq!(area("<microtrace::number::soft_float::SoftFloat as core::ops::arith::Add>::add"), "microtrace::number");
+        assert_eq!(area("microtrace::render::direct_lighting::direct_lighting"), "microtrace::render");
+        assert_eq!(area("microtrace_firmware::scene::OBJECTS_AHEAD"), "microtrace_firmware::scene");
+        assert_eq!(area("microtrace_firmware::main"), "microtrace_firmware");
+        assert_eq!(area("compiler_builtins::float::add::__addsf3"), "compiler_builtins");
+        assert_eq!(area("__aeabi_fadd"), "(other)");
+    }
+}

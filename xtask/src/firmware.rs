@@ -178,6 +178,9 @@ pub struct FirmwareRun {
     pub linked_audit_txt: PathBuf,
     /// The f64, panic and formatting symbols the ELF links (their counts are in `numbers`).
     pub audit: elf::LinkedAudit,
+    /// Where the flash goes: each area's bytes, largest first (`flash-by-function.txt` beside
+    /// the ELF lists every symbol).
+    pub flash_areas: Vec<(String, u64)>,
     /// Every integer of the report, by key (`frame_instructions`, `instructions` (the same),
     /// `prepare_instructions`, `render_instructions`, `pixels`, `flash_bytes`, ...).
     pub numbers: BTreeMap<String, u64>,
@@ -240,6 +243,9 @@ pub fn run(options: &FirmwareOptions) -> Result<FirmwareRun, String> {
     let audit = elf::audit(&elf_bytes)?;
     let linked_audit_txt = out.join("linked-audit.txt");
     std::fs::write(&linked_audit_txt, audit.text()).map_err(|error| format!("{}: {error}", linked_audit_txt.display()))?;
+    let (flash_symbols, flash_areas) = elf::flash_symbols(&elf_bytes)?;
+    let flash_txt = out.join("flash-by-function.txt");
+    std::fs::write(&flash_txt, elf::flash_text(&flash_symbols, &flash_areas)).map_err(|error| format!("{}: {error}", flash_txt.display()))?;
     let start = elf::function_address(&elf_bytes, "microtrace_measure_start")?;
     let render = elf::function_address(&elf_bytes, "microtrace_measure_render")?;
     let end = elf::function_address(&elf_bytes, "microtrace_measure_end")?;
@@ -302,7 +308,7 @@ pub fn run(options: &FirmwareOptions) -> Result<FirmwareRun, String> {
 
     let framebuffer = out.join("framebuffer.bin");
     let oled_png = options.board.has_display().then(|| out.join("oled.png"));
-    Ok(FirmwareRun { elf: elf_path, framebuffer, oled_png, report_json, linked_audit_txt, audit, numbers: integers })
+    Ok(FirmwareRun { elf: elf_path, framebuffer, oled_png, report_json, linked_audit_txt, audit, flash_areas, numbers: integers })
 }
 
 /// Says what is wrong with `--number` and `--opt` before anything is built.

@@ -71,6 +71,9 @@ pub struct ReportRun {
     /// Pixels of `framebuffer.bin` that differ from the host's render in the same number type
     /// (`host_render`): 0 when the chip and the host agree byte for byte.
     pub differing_pixels: u64,
+    /// Where the flash goes (`elf::flash_symbols`): each area's bytes, largest first. Not in the
+    /// JSON: the README's table gives it for the thesis scenes on the Cortex-M3.
+    pub flash_areas: Vec<(String, u64)>,
 }
 
 /// A build that the board's RAM cannot hold: the RAM check's message (firmware/src/ram.rs).
@@ -367,6 +370,7 @@ pub fn run(filter: &ReportFilter) -> Result<Vec<ReportRun>, String> {
             rays_traced: get("rays_traced")?,
             secondary_rays: get("secondary_rays")?,
             differing_pixels,
+            flash_areas: result.flash_areas.clone(),
         };
         if differing_pixels != 0 {
             println!("    {differing_pixels} pixels differ from the host's render in {number}");
@@ -535,7 +539,65 @@ pub fn markdown(runs: &[ReportRun], misses: &[ReportMiss]) -> String {
         );
     }
     text += &chapter_five_table(runs);
+    text += &flash_table(runs);
     text
+}
+
+/// Where the flash goes: the thesis scenes on the Cortex-M3 (lm3s6965evb), with their own
+/// `optimize` and primitives, in `f32`, `fixed` and `soft32`, by area (`elf::area`: the core's
+/// and the firmware's modules, other crates whole); areas under 1 % of every build summed.
+fn flash_table(runs: &[ReportRun]) -> String {
+    let columns: Vec<&ReportRun> = SCENES
+        .iter()
+        .flat_map(|file| ["f32", "fixed", "soft32"].map(move |number| (stem(file), number)))
+        .filter_map(|(scene, number)| {
+            runs.iter().find(|run| {
+                run.scene == scene && run.number == number && run.board == Board::Lm3s6965evb && run.primitives == Primitives::Scene && run.optimizations == "scene"
+            })
+        })
+        .collect();
+    if columns.is_empty() {
+        return String::new();
+    }
+    let bytes = |run: &ReportRun, area: &str| run.flash_areas.iter().find(|(name, _)| name == area).map_or(0, |(_, bytes)| *bytes);
+    let mut areas: Vec<String> = Vec::new();
+    for run in &columns {
+        for (area, _) in &run.flash_areas {
+            if !areas.contains(area) && columns.iter().any(|run| bytes(run, area) * 100 >= run.flash_bytes) {
+                areas.push(area.clone());
+            }
+        }
+    }
+    areas.sort_by_key(|area| std::cmp::Reverse(columns.iter().map(|run| bytes(run, area)).max().unwrap_or(0)));
+    let mut text = String::from(
+        "\nWhere the flash goes on the Cortex-M3 (lm3s6965evb), each thesis scene with its own `optimize`: bytes by\n\
+         area (`xtask::elf::area`: the core's and the firmware's modules, other crates whole; `(other)`:\n\
+         the compiler's runtime routines by their C names; `(no symbol)`: the vector table's padding and\n\
+         unnamed constants). Each run's `flash-by-function.txt` lists every symbol, largest first.\n\n| area |",
+    );
+    for run in &columns {
+        text += &format!(" {} {} |", run.scene, run.number);
+    }
+    text += "\n|---|";
+    text += &"---:|".repeat(columns.len());
+    text += "\n";
+    for area in &areas {
+        text += &format!("| `{area}` |");
+        for run in &columns {
+            text += &format!(" {} |", thousands(bytes(run, area)));
+        }
+        text += "\n";
+    }
+    text += "| the rest |";
+    for run in &columns {
+        let listed: u64 = areas.iter().map(|area| bytes(run, area)).sum();
+        text += &format!(" {} |", thousands(run.flash_bytes.saturating_sub(listed)));
+    }
+    text += "\n| **flash** |";
+    for run in &columns {
+        text += &format!(" **{}** |", thousands(run.flash_bytes));
+    }
+    text + "\n"
 }
 
 /// `=` when the run's picture is the host's byte for byte, else how many pixels differ.
@@ -775,6 +837,7 @@ mod tests {
             rays_traced: 3000,
             secondary_rays: 0,
             differing_pixels: 0,
+            flash_areas: Vec::new(),
         };
         let mut differing = run.clone();
         differing.board = Board::Microbit;
@@ -814,6 +877,7 @@ mod tests {
             rays_traced: 8,
             secondary_rays: 9,
             differing_pixels: 0,
+            flash_areas: Vec::new(),
         };
         assert_eq!(
             json(&[run]),
