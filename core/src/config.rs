@@ -90,9 +90,15 @@ pub trait PaletteStorage: core::ops::Deref<Target = Palette> + Default {
     fn hold(&mut self, palette: &Palette);
 }
 
-/// A look-up table of the scene's own.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+/// A look-up table of the scene's own (every entry black until preparation holds the scene's).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct OwnedPalette(pub Palette);
+
+impl Default for OwnedPalette {
+    fn default() -> Self {
+        Self::BLACK
+    }
+}
 
 impl OwnedPalette {
     /// Every entry black: the value of a scene not yet prepared.

@@ -18,9 +18,10 @@
 //!
 //! The stack reserve grows with the scene: the render's shadow tables take a light's chord and
 //! blocker set per object (and, while they are built, the sweep's reach and order; each light
-//! after the first its own chord and blocker set), on top of about 4 KB of preparing's and the
-//! pixel's frames. It is that, but at least the budget's peak stack (firmware/README.md, "Memory
-//! budget": 12 KB), or `MICROTRACE_STACK_RESERVE` (build.rs) when given. Since the objects left
+//! after the first its own chord and blocker set), on top of preparing's and the pixel's frames
+//! (4 KB; 1.5 KB on the 8 KB lm3s811evb: the board's `STACK_BASE_BYTES`). It is that, but at
+//! least the board's budget of peak stack (firmware/README.md, "Memory budget": 12 KB; 6 KB on
+//! the micro:bit, 3 KB on the lm3s811evb), or `MICROTRACE_STACK_RESERVE` (build.rs) when given. Since the objects left
 //! the RAM, the stack is what limits a large scene: 300 spheres measured 32,448 bytes of
 //! prepared scene and 27,760 of peak stack in `f32`. A scene that passes this check and still
 //! overflows its stack stops with "stack overflow" (src/fault.rs), never silently.
@@ -45,7 +46,8 @@ const TABLES_PER_OBJECT: usize = size_of::<DirectionChord<scene::Number>>()
 /// stack beyond the tables is about 3 KB): 4 KB, less on a board whose RAM cannot spare it.
 const STACK_BASE_BYTES: usize = crate::board::STACK_BASE_BYTES;
 
-/// The budget's peak stack: the least the check keeps (12 KB; 6 KB on the 16 KB micro:bit).
+/// The budget's peak stack: the least the check keeps (12 KB; 6 KB on the 16 KB micro:bit, 3 KB
+/// on the 8 KB lm3s811evb).
 const STACK_BUDGET_BYTES: usize = crate::board::STACK_BUDGET_BYTES;
 
 /// The stack this build keeps free for preparing and rendering (see the module's comment).

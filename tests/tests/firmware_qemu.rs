@@ -181,10 +181,11 @@ fn a_bad_scene_fails_with_the_parsers_message() {
 
 /// The integer number types run the same core on the firmware: the framebuffer equals the
 /// host's render in that type, byte for byte, and so do the statistics.
-fn firmware_matches_host_in<N: microtrace::number::Number>(name: &str, board: Board) {
+fn firmware_matches_host_in<N: microtrace::number::Number>(name: &str, board: Board) -> FirmwareRun {
     let (run, statistics) = firmware_picture_matches_host_in::<N>(name, board);
     assert_eq!(run.numbers["ro_tests"], statistics.ro_tests);
     assert_eq!(run.numbers["shadow_tests"], statistics.shadow_tests);
+    run
 }
 
 /// [`firmware_matches_host_in`]'s picture and linked code, for a scene with an object that
@@ -364,7 +365,7 @@ fn the_nut_in_soft32_on_lm3s6965evb_matches_the_host() {
 /// byte for byte, within its memory as the build measured it.
 #[test]
 fn snooker_fits_the_lm3s811evb() {
-    let (run, _) = firmware_picture_matches_host_in::<f32>("snooker.mts", Board::Lm3s811evb);
+    let run = firmware_matches_host_in::<f32>("snooker.mts", Board::Lm3s811evb);
     let (ram, stack, flash) = (run.numbers["static_ram_bytes"], run.numbers["stack_peak_bytes"], run.numbers["flash_bytes"]);
     assert!(ram + stack <= 8 * 1024, "snooker on the lm3s811evb: {ram} bytes of static RAM and {stack} of peak stack exceed its 8,192");
     assert!(flash <= 64 * 1024, "snooker on the lm3s811evb: {flash} bytes of flash exceed its 65,536");

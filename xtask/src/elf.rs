@@ -409,9 +409,9 @@ pub struct FlashSymbol {
 pub type FlashAreas = Vec<(String, u64)>;
 
 /// Where the flash goes, `cargo bloat`'s way: every sized symbol in a section that reaches flash
-/// (code, read-only data, `.data`'s initial values), largest first, and the bytes of each
-/// area; what no symbol covers (the vector table, alignment, unnamed constants) is the area
-/// `(no symbol)`.
+/// (code, read-only data, `.data`'s initial values), largest first (aliases of one address
+/// counted once), and the bytes of each area; what no symbol covers (alignment, unnamed
+/// constants) is the area `(no symbol)`.
 pub fn flash_symbols(elf: &[u8]) -> Result<(Vec<FlashSymbol>, FlashAreas), String> {
     let file = object::File::parse(elf).map_err(|error| format!("not an ELF file: {error}"))?;
     let in_flash = |index: object::SectionIndex| {
@@ -421,10 +421,12 @@ pub fn flash_symbols(elf: &[u8]) -> Result<(Vec<FlashSymbol>, FlashAreas), Strin
             sh_flags & SHF_ALLOC != 0 && !nobits
         })
     };
+    let mut seen = std::collections::BTreeSet::new();
     let mut symbols: Vec<FlashSymbol> = file
         .symbols()
         .filter(|symbol| symbol.size() > 0 && matches!(symbol.kind(), object::SymbolKind::Text | object::SymbolKind::Data))
         .filter(|symbol| symbol.section_index().is_some_and(in_flash))
+        .filter(|symbol| seen.insert((symbol.section_index().map(|index| index.0), symbol.address())))
         .filter_map(|symbol| {
             let demangled = demangle(symbol.name().ok()?);
             Some(FlashSymbol { area: area(&demangled), demangled, bytes: symbol.size() })
@@ -449,12 +451,27 @@ pub fn flash_symbols(elf: &[u8]) -> Result<(Vec<FlashSymbol>, FlashAreas), Strin
 /// the type's module (`<microtrace::number::SoftFloat as core::ops::Add>::add` is
 /// `microtrace::number`).
 pub fn area(demangled: &str) -> String {
-    let path = demangled.trim_start_matches('<').trim_start_matches("impl ").trim_start_matches('&').trim_start_matches("mut ");
-    let path = path.split([' ', '<', '>', '(', ',']).next().unwrap_or(path);
+    let bare = |text: &str| -> String {
+        let mut text = text;
+        loop {
+            let trimmed = text.trim_start_matches(['<', '&', '[', '(', '*']).trim_start_matches("impl ").trim_start_matches("mut ").trim_start_matches("const ");
+            if trimmed == text {
+                return text.to_owned();
+            }
+            text = trimmed;
+        }
+    };
+    let path = bare(demangled);
+    // `<f32 as microtrace::number::Number>::add`: a type without a path goes by its trait.
+    let path = match path.split_once(" as ") {
+        Some((own, trait_path)) if !own.contains("::") => bare(trait_path),
+        _ => path,
+    };
+    let path = path.split([' ', '<', '>', '(', ',', ';', ']']).next().unwrap_or("");
     let segments: Vec<&str> = path.split("::").collect();
     match segments.as_slice() {
         [krate @ ("microtrace" | "microtrace_firmware"), module, _, ..] => format!("{krate}::{module}"),
-        [krate, ..] if !krate.is_empty() && segments.len() > 1 => (*krate).to_owned(),
+        [krate, _, ..] if !krate.is_empty() => (*krate).to_owned(),
         _ => "(other)".to_owned(),
     }
 }
@@ -485,5 +502,8 @@ mod area_tests {
         assert_eq!(area("microtrace_firmware::main"), "microtrace_firmware");
         assert_eq!(area("compiler_builtins::float::add::__addsf3"), "compiler_builtins");
         assert_eq!(area("__aeabi_fadd"), "(other)");
+        assert_eq!(area("<f32 as microtrace::number::Number>::checked_div"), "microtrace::number");
+        assert_eq!(area("<[T; N] as core::fmt::Debug>::fmt"), "core");
+        assert_eq!(area("<(A, B) as microtrace::storage::Table<T>>::slots"), "microtrace::storage");
     }
 }

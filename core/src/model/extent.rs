@@ -58,6 +58,13 @@ impl Extent {
         self.first_column > self.last_column || self.first_row > self.last_row
     }
 
+    /// Whether no pixel lies in it: the rectangle or a diagonal range is empty (an overlap's
+    /// may be empty by its diagonals alone).
+    fn covers_nothing(&self) -> bool {
+        let [s1, s2, d1, d2] = self.diagonal;
+        self.is_empty() || s1 > s2 || d1 > d2
+    }
+
     /// Whether the pixel lies in the octagon: the rectangle and both diagonal ranges.
     #[inline]
     pub fn covers(&self, column: u16, row: u16, height: u16) -> bool {
@@ -67,10 +74,10 @@ impl Extent {
     /// The smallest extent around both (every range the hull of the two): what a union of two
     /// parts may cover (§3.3.6, ∪).
     pub fn hull(self, other: Self) -> Self {
-        if self.is_empty() {
+        if self.covers_nothing() {
             return other;
         }
-        if other.is_empty() {
+        if other.covers_nothing() {
             return self;
         }
         let [a, b] = [self.diagonal, other.diagonal];

@@ -29,10 +29,10 @@ pub struct NearestHit<N> {
 pub const NO_LEAF: u16 = u16::MAX;
 
 /// The nearest hit on `object` (number `index`) inside `interval`: `world` is the ray, `local`
-/// the same in the object's space (a primitive's; a solid works from `world`); `pixel`, a
-/// primary ray's. The caller makes
-/// `local` as it always did: made here, behind the solid's branch, it cost the Cortex-M4F's
-/// unoptimized snooker frame 14 % (the transform no longer inlined).
+/// the same in the object's space (a primitive's; a solid works from `world`), `pixel` a
+/// primary ray's (inside a solid, Extents skips the parts whose extent excludes it). The caller
+/// makes `local` as it always did: made here, behind the solid's branch, it cost the
+/// Cortex-M4F's unoptimized snooker frame 14 % (the transform no longer inlined).
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn hit_object<N: Number, C: Config<Number = N>>(

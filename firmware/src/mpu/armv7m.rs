@@ -23,7 +23,8 @@ const REGIONS: [(u32, u32, u32); 3] = [
 ];
 
 // An MPU region is a power of two of at least 32 bytes, aligned to its size: memory.x must
-// describe its flash and RAM so (both boards' do: 256K at 0, 64K at 0x2000_0000).
+// describe its flash and RAM so (every ARMv7-M board's does: 256K or 64K at 0, 64K or 8K at
+// 0x2000_0000).
 const _: () = {
     let mut index = 0;
     while index < REGIONS.len() {
