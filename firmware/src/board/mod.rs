@@ -1,9 +1,26 @@
 //! Board support: one folder per board, one board per build (a cargo feature). Each provides
 //! `Display` (a `display::RowDisplay`: whole rows of grey levels), `init()`,
-//! `hold_picture_for_capture()` and `STACK_BUDGET_BYTES` (src/ram.rs), and with an MPU
+//! `hold_picture_for_capture()` (a board with no display it drives takes `headless`'s),
+//! `STACK_BUDGET_BYTES` and `STACK_BASE_BYTES` (src/ram.rs), and with an MPU
 //! `PERIPHERALS` (src/fault.rs); the render and the report are shared (main.rs).
 
 //! build.rs checks that exactly one is enabled.
+
+/// What a board without a display it drives provides: no display, nothing to capture.
+#[cfg(not(feature = "lm3s6965evb"))]
+mod headless {
+    /// The type is there so the shared code has one to name.
+    pub type Display = crate::display::NoDisplay;
+
+    pub fn init() -> Option<Display> {
+        None
+    }
+
+    /// Nothing to capture.
+    pub fn hold_picture_for_capture() -> bool {
+        true
+    }
+}
 
 #[cfg(feature = "lm3s6965evb")]
 mod lm3s6965evb;

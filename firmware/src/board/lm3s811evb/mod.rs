@@ -4,17 +4,8 @@
 //! picture goes to the host as `framebuffer.bin`, streamed row by row, and the RAM it would
 //! take stays with the stack.
 
-/// No display driven on this board; the type is there so the shared code has one to name.
-pub type Display = crate::display::NoDisplay;
-
-pub fn init() -> Option<Display> {
-    None
-}
-
-/// Nothing to capture.
-pub fn hold_picture_for_capture() -> bool {
-    true
-}
+/// No display (driven) here: the picture goes to the host only.
+pub use super::headless::{hold_picture_for_capture, init};
 
 /// The peripherals' region for the MPU (src/fault.rs): the first megabyte of the peripheral
 /// region, as on the lm3s6965evb (the firmware touches none here but the system's).

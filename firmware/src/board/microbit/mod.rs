@@ -4,17 +4,8 @@
 //! Its 5x5 LED matrix is no display for a picture: the picture goes to the host as
 //! `framebuffer.bin` only.
 
-/// No display on this board; the type is there so the shared code has one to name.
-pub type Display = crate::display::NoDisplay;
-
-pub fn init() -> Option<Display> {
-    None
-}
-
-/// Nothing to capture.
-pub fn hold_picture_for_capture() -> bool {
-    true
-}
+/// No display (driven) here: the picture goes to the host only.
+pub use super::headless::{hold_picture_for_capture, init};
 
 /// The stack the RAM check keeps at the least (src/ram.rs): 16 KB of RAM cannot keep the
 /// other boards' 12 KB beside a scene; snooker's deepest stack measured 4.5 KB in every number

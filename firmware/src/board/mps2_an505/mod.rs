@@ -4,17 +4,8 @@
 //! `framebuffer.bin` only. The memory layout (memory.x beside this file) uses 256 KB of code
 //! and 64 KB of RAM, to stand for a small part.
 
-/// No display on this board; the type is there so the shared code has one to name.
-pub type Display = crate::display::NoDisplay;
-
-pub fn init() -> Option<Display> {
-    None
-}
-
-/// Nothing to capture.
-pub fn hold_picture_for_capture() -> bool {
-    true
-}
+/// No display (driven) here: the picture goes to the host only.
+pub use super::headless::{hold_picture_for_capture, init};
 
 /// The Secure alias of the APB peripherals, the MPU's region for them (src/fault.rs); the
 /// firmware uses none, semihosting is all it needs.
