@@ -401,7 +401,7 @@ fn generate<const N: usize>(
     writeln!(out, "pub const HEIGHT: u16 = {};", v.height()).unwrap();
     writeln!(out, "pub const PIXEL_COUNT: usize = {};", v.pixel_count()).unwrap();
     writeln!(out, "pub const OBJECT_COUNT: usize = {};", d.objects.len()).unwrap();
-    writeln!(out, "pub const LIGHT_COUNT: usize = {};", 1 + d.more_lights.len()).unwrap();
+    writeln!(out, "/// The lights after the first, what the scene's tables hold.\npub const OTHER_LIGHTS: usize = {};", d.more_lights.len()).unwrap();
     // The ray tree's explicit stack holds this many nodes: the scene's `depth`, or one (the
     // primary hit) when no object spawns rays.
     let tree_depth = if d.objects.iter().any(|object| object.material.spawns_rays()) { d.depth } else { 1 };

@@ -32,9 +32,13 @@ pub trait Config: 'static {
     type Palette: PaletteStorage;
     /// One `T` per object.
     type PerObject<T: Copy>: Table<T>;
-    /// One `T` per object for each light after the first ([`MAX_LIGHTS`]` − 1` tables of
-    /// one per object, one after the other): the per-render shadow tables of the other lights.
+    /// One `T` per object for each light after the first (as many tables of one per object as
+    /// [`Config::OtherLights`] holds lights, one after the other): the per-render shadow tables
+    /// of the other lights.
     type PerObjectPerOtherLight<T: Copy>: Table<T>;
+    /// The lights after the first: the firmware's exactly its scene's, a host's the format's
+    /// [`MAX_LIGHTS`]` − 1`.
+    type OtherLights<T: Clone>: List<T>;
     /// At most one `T` per object.
     type PerObjectList<T: Clone>: List<T>;
     /// The screen grid's pool: [`Config::GRID_ENTRIES_PER_OBJECT`] `T`s per object.
@@ -140,7 +144,7 @@ pub const DEFAULT_ANTIALIAS_ROW: usize = 2049;
 
 /// Every table an array of a capacity fixed at compile time: `K` objects (kept in `O`),
 /// `POOL` grid entries per object, a ray tree `DEPTH` deep and antialiasing rows of `ROW`
-/// corners, the solids' nodes in `S`, the look-up table in `P`. The firmware's scene is one (sized by its scene), and so
+/// corners, the solids' nodes in `S`, the look-up table in `P`, `OTHER_LIGHTS` lights after the first. The firmware's scene is one (sized by its scene), and so
 /// are the tests'.
 pub struct Arrays<
     N,
@@ -151,15 +155,16 @@ pub struct Arrays<
     const ROW: usize = DEFAULT_ANTIALIAS_ROW,
     S = heapless::Vec<PreparedSolidNode<N>, MAX_SOLID_NODES>,
     P = OwnedPalette,
+    const OTHER_LIGHTS: usize = { MAX_LIGHTS - 1 },
 >(PhantomData<(N, O, S, P)>);
 
-impl<N, const K: usize, O, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P> Debug for Arrays<N, K, O, POOL, DEPTH, ROW, S, P> {
+impl<N, const K: usize, O, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize> Debug for Arrays<N, K, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS> {
     fn fmt(&self, formatter: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         write!(formatter, "Arrays<{K} objects, {POOL} grid entries each, depth {DEPTH}, row {ROW}>")
     }
 }
 
-impl<N, const K: usize, O, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P> Config for Arrays<N, K, O, POOL, DEPTH, ROW, S, P>
+impl<N, const K: usize, O, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize> Config for Arrays<N, K, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS>
 where
     N: Number + 'static,
     O: Objects<N> + 'static,
@@ -172,7 +177,8 @@ where
     type Solids = S;
     type Palette = P;
     type PerObject<T: Copy> = [T; K];
-    type PerObjectPerOtherLight<T: Copy> = [[T; K]; MAX_LIGHTS - 1];
+    type PerObjectPerOtherLight<T: Copy> = [[T; K]; OTHER_LIGHTS];
+    type OtherLights<T: Clone> = heapless::Vec<T, OTHER_LIGHTS>;
     type PerObjectList<T: Clone> = heapless::Vec<T, K>;
     type GridPool<T: Copy> = [[T; POOL]; K];
     type SpaceEntries = [[u16; SPACE_ENTRIES_PER_OBJECT]; K];

@@ -29,18 +29,17 @@
 use core::mem::size_of;
 
 use microtrace::optimize::shadow_culling::{BlockerSet, DirectionChord, LightReach};
-use microtrace::model::MAX_LIGHTS;
 
 use crate::scene;
 
 /// The stack the render's shadow tables take per object (render/shadow_tables.rs: `with_shadow_culling`,
 /// `build_shadow_tables`, and for a scene with several lights `with_more_lights_culling`, whose
-/// tables are sized for every light the format allows).
+/// tables hold the scene's other lights).
 const TABLES_PER_OBJECT: usize = size_of::<DirectionChord<scene::Number>>()
     + size_of::<BlockerSet>()
     + size_of::<LightReach<scene::Number>>()
     + size_of::<u16>()
-    + if scene::LIGHT_COUNT > 1 { (MAX_LIGHTS - 1) * (size_of::<DirectionChord<scene::Number>>() + size_of::<BlockerSet>()) } else { 0 };
+    + scene::OTHER_LIGHTS * (size_of::<DirectionChord<scene::Number>>() + size_of::<BlockerSet>());
 
 /// The frames below the tables: preparing's, the row's and the pixel's (the report's deepest
 /// stack beyond the tables is about 3 KB): 4 KB, less on a board whose RAM cannot spare it.

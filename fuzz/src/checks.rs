@@ -48,12 +48,23 @@ fn check_message(error: &SceneError) {
     assert!(!reason.is_empty());
 }
 
-/// The `.mts` parser: any bytes either parse or give an error with a one-line message.
+/// The `.mts` parser and the NFF reader: any bytes either parse or give an error with a
+/// one-line message, in each.
 pub fn parse_input(data: &[u8]) {
     match parse::<PARSE_CAPACITY>(data) {
         Ok(scene) => {
             assert!(scene.objects.len() <= PARSE_CAPACITY);
             assert!(scene.viewport.x1 <= scene.viewport.x2 && scene.viewport.y1 <= scene.viewport.y2);
+        }
+        Err(error) => check_message(&error),
+    }
+    let nff: Result<SceneDescription<PARSE_CAPACITY>, SceneError> = microtrace::parser::nff::parse_into_list(data);
+    match nff {
+        Ok(scene) => {
+            assert!(scene.objects.len() <= PARSE_CAPACITY);
+            assert!(scene.viewport.x1 <= scene.viewport.x2 && scene.viewport.y1 <= scene.viewport.y2);
+            // Every object's transform inverts (the reader leaves out what would not).
+            assert!(scene.objects.iter().all(|object| object.world_from_object.affine_inverse().is_some()));
         }
         Err(error) => check_message(&error),
     }

@@ -44,9 +44,22 @@ pub fn in_file(path: &Path, error: anyhow::Error) -> anyhow::Error {
     }
 }
 
+/// Reads a scene: `.mts` (docs/scene-format.md), or Haines' NFF (`.nff`, and `.nff.gz`
+/// compressed; docs/nff.md).
 pub fn load(path: &Path) -> anyhow::Result<Box<HostScene>> {
-    let text = std::fs::read(path).with_context(|| format!("cannot read scene {}", path.display()))?;
-    match microtrace::parser::parse_into_list(&text) {
+    let bytes = std::fs::read(path).with_context(|| format!("cannot read scene {}", path.display()))?;
+    let name = path.file_name().map(|name| name.to_string_lossy().to_ascii_lowercase()).unwrap_or_default();
+    let parsed = if name.ends_with(".nff.gz") {
+        let mut text = Vec::new();
+        std::io::Read::read_to_end(&mut flate2::read::MultiGzDecoder::new(&bytes[..]), &mut text)
+            .with_context(|| format!("{}: not a readable gzip file", path.display()))?;
+        microtrace::parser::nff::parse_into_list(&text)
+    } else if name.ends_with(".nff") {
+        microtrace::parser::nff::parse_into_list(&bytes)
+    } else {
+        microtrace::parser::parse_into_list(&bytes)
+    };
+    match parsed {
         Ok(scene) => Ok(Box::new(scene)),
         Err(error) => Err(SceneFileError { path: path.to_owned(), error }.into()),
     }
@@ -74,5 +87,24 @@ pub fn parse_switch(text: &str) -> Result<bool, String> {
         "on" => Ok(true),
         "off" => Ok(false),
         _ => Err(format!("expected on or off, got `{text}`")),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use std::path::Path;
+
+    /// `.nff.gz` is read through gzip, `.nff` as it is: the same scene.
+    #[test]
+    fn compressed_and_plain_nff_read_the_same() {
+        let scenes = Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes/spd");
+        let compressed = super::load(&scenes.join("full/balls-s1.nff.gz")).unwrap();
+        let plain = super::load(&scenes.join("balls1.nff")).unwrap();
+        // 10 spheres and the ground square as two triangles.
+        assert_eq!(compressed.objects.len(), 12);
+        assert_eq!(compressed.objects.len(), plain.objects.len());
+        assert_eq!(compressed.more_lights.len(), 2);
+        let error = super::load(&scenes.join("README.md")).unwrap_err().to_string();
+        assert!(error.contains("README.md:line 1: unknown keyword"), "{error}");
     }
 }

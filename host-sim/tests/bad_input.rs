@@ -49,10 +49,13 @@ fn scene_variant(kind: &SceneErrorKind) -> &'static str {
         SceneErrorKind::SolidTooComplex { .. } => "SolidTooComplex",
         SceneErrorKind::OperandRequired { .. } => "OperandRequired",
         SceneErrorKind::OpticsOnOperand { .. } => "OpticsOnOperand",
+        SceneErrorKind::OpenSurfaceInSolid { .. } => "OpenSurfaceInSolid",
+        SceneErrorKind::UnexpectedEnd { .. } => "UnexpectedEnd",
+        SceneErrorKind::ViewRequired => "ViewRequired",
     }
 }
 
-const SCENE_VARIANTS: [&str; 24] = [
+const SCENE_VARIANTS: [&str; 27] = [
     "InvalidUtf8",
     "UnknownKeyword",
     "WrongArgumentCount",
@@ -77,6 +80,9 @@ const SCENE_VARIANTS: [&str; 24] = [
     "SolidTooComplex",
     "OperandRequired",
     "OpticsOnOperand",
+    "OpenSurfaceInSolid",
+    "UnexpectedEnd",
+    "ViewRequired",
 ];
 
 /// `FormatErrorKind` is `#[non_exhaustive]`, so its list is by hand; the decoder tests in the
@@ -194,6 +200,11 @@ fn rows() -> Vec<Row> {
 
 /// The library's message and error name for a scene row.
 fn scene_library(row: &Row) -> (String, String) {
+    if row.place == "parse nff" {
+        let error = microtrace::parser::nff::parse_into_list::<Growing<_>>(&row.input).expect_err(&format!("{row:?} parses"));
+        let name = scene_variant(&error.kind).to_owned();
+        return (SceneFileError { path: "scene.nff".into(), error }.to_string(), name);
+    }
     let description = parse_into_list::<Growing<_>>(&row.input);
     if row.place == "parse" {
         let error = description.expect_err(&format!("{row:?} parses"));
@@ -225,6 +236,10 @@ fn command_message(row: &Row, directory: &Path) -> String {
             std::fs::write(directory.join("scene.mts"), &row.input).unwrap();
             run(&["render", "scene.mts", "--out", "out.png"])
         }
+        "parse nff" => {
+            std::fs::write(directory.join("scene.nff"), &row.input).unwrap();
+            run(&["render", "scene.nff", "--out", "out.png"])
+        }
         place if place.starts_with("prepare ") => {
             std::fs::write(directory.join("scene.mts"), &row.input).unwrap();
             run(&["render", "scene.mts", "--number", &place["prepare ".len()..], "--out", "out.png"])
@@ -250,7 +265,7 @@ fn every_row_of_the_bad_input_table_gives_its_message_and_every_error_has_a_row(
     let mut failures = Vec::new();
     for row in rows() {
         let (message, name) = match row.place.as_str() {
-            "parse" => scene_library(&row),
+            "parse" | "parse nff" => scene_library(&row),
             place if place.starts_with("prepare ") => scene_library(&row),
             "decode" => match formats::inspect(&row.input) {
                 Err(error) => (format!("cannot decode image.bin: {error}"), variant_name(format!("{:?}", error.kind))),

@@ -2,7 +2,7 @@
 //! parser so that it cannot drift from the code:
 //! - every fenced block marked ```` ```mts ```` parses and prepares in `f64`;
 //! - the statement tables (tables whose first header cell is `statement`) name only keywords
-//!   the parser knows, and every one of the parser's 36 keywords (`Keyword::ALL` in
+//!   the parser knows, and every one of the parser's 38 keywords (`Keyword::ALL` in
 //!   core/src/parser/mod.rs) as a statement; a statement listed under "Object statements"
 //!   needs an object, one listed elsewhere does not;
 //! - every row of the errors table (header `input | message`) gives exactly that message;
@@ -17,7 +17,7 @@ use microtrace::scene::Scene;
 const CAPACITY: usize = 16;
 
 /// The parser's keywords, in the order of `Keyword::ALL` (core/src/parser/mod.rs).
-const KEYWORDS: [&str; 36] = [
+const KEYWORDS: [&str; 38] = [
     "viewport",
     "window",
     "viewplane",
@@ -35,6 +35,8 @@ const KEYWORDS: [&str; 36] = [
     "cylinder",
     "cone",
     "torus",
+    "frustum",
+    "triangle",
     "scale",
     "rotate",
     "translate",

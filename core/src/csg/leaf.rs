@@ -59,8 +59,8 @@ fn contains<N: Number>(primitive: Primitive, p: Vector3<N>) -> bool {
             let sum = p.x * p.x + p.y * p.y + p.z * p.z + one - r * r;
             sum * sum <= (p.x * p.x + p.y * p.y).times_power_of_two(2)
         }
-        // A solid is never its own leaf.
-        Primitive::Solid(_) => false,
+        // A solid is never its own leaf; open surfaces enclose nothing (and no solid has them).
+        Primitive::Solid(_) | Primitive::Frustum(_) | Primitive::Triangle => false,
     }
 }
 

@@ -132,6 +132,12 @@ pub enum SceneErrorKind {
     OperandRequired { keyword: &'static str },
     /// `reflect`, `transmit` or `ior` on an operand of a solid: they are the whole solid's.
     OpticsOnOperand { keyword: &'static str },
+    /// An open surface (a frustum, a triangle) as an operand of a solid, which needs an inside.
+    OpenSurfaceInSolid { primitive: &'static str },
+    /// The file ends inside a statement that needs more (an NFF `p` short of its vertices).
+    UnexpectedEnd { expected: &'static str },
+    /// An NFF object before the view (`v`), or an NFF scene without one.
+    ViewRequired,
 }
 
 impl fmt::Display for SceneErrorKind {
@@ -176,7 +182,7 @@ impl fmt::Display for SceneErrorKind {
             Self::ObjectRequired { keyword } => write!(
                 f,
                 "`{keyword}` changes the most recent object, but no object has started yet \
-                 (start one with cube, sphere, cylinder, cone or torus, or a solid: union, intersection or difference)"
+                 (start one with cube, sphere, cylinder, cone, torus, frustum or triangle, or a solid: union, intersection or difference)"
             ),
             Self::TooManyObjects { capacity } => {
                 write!(f, "too many objects: this build holds at most {capacity}")
@@ -208,6 +214,12 @@ impl fmt::Display for SceneErrorKind {
                 f,
                 "`{keyword}` on an operand of a solid: reflection and refraction are the whole solid's (write it after the outermost `end`)"
             ),
+            Self::OpenSurfaceInSolid { primitive } => write!(
+                f,
+                "a {primitive} is an open surface, with no inside: it cannot be an operand of a solid (use a closed primitive: cube, sphere, cylinder, cone or torus)"
+            ),
+            Self::UnexpectedEnd { expected } => write!(f, "the file ends where {expected} should follow"),
+            Self::ViewRequired => f.write_str("NFF needs the view (`v` with from, at, up and angle) before the first object"),
         }
     }
 }

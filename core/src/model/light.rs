@@ -9,8 +9,9 @@ pub enum Light {
     Direction([f64; 3]),
 }
 
-/// How many lights a scene may have (chapter 5: each `light` statement adds one).
-pub const MAX_LIGHTS: usize = 4;
+/// How many lights a scene may have (chapter 5: each `light` statement adds one; Haines' SPD
+/// scenes have up to 7). A build's own tables hold its scene's (`Config::OtherLights`).
+pub const MAX_LIGHTS: usize = 8;
 
 /// A light beyond the first, with its intensity and the line that set it.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -1,4 +1,5 @@
-//! The primitives: one closed set (§4.2.5, and §5.2.1's torus). A new primitive joins here (its variant, keyword
+//! The primitives: one closed set (§4.2.5, §5.2.1's torus, and the open frustum and the
+//! triangle that Haines' NFF scenes are made of). A new primitive joins here (its variant, keyword
 //! and feature), in `shapes/` (its intersection) and in `optimize/bounding_volume.rs` (its
 //! bounding volume); docs/architecture.md has the checklist.
 
@@ -18,6 +19,12 @@ pub enum Primitive {
     /// The circle of radius 1 about +z in the plane z = 0, swept by a tube of the given radius
     /// (`torus R`, 0 < R < 1: a ring torus).
     Torus(Tube),
+    /// An open truncated cone (NFF's `c`): radius `taper` at z = 0 to 1 at z = 1, no caps, seen
+    /// from outside and inside (`frustum R`). A taper of 1 is an open cylinder, 0 an open cone.
+    Frustum(Taper),
+    /// The unit triangle (0,0,0), (1,0,0), (0,1,0) in the plane z = 0, seen from both sides: its
+    /// transform maps it onto any triangle (NFF's polygons and patches, split into triangles).
+    Triangle,
     /// A solid of constructive solid geometry (`union`, `intersection`, `difference` … `end`):
     /// to the optimizations the unit cube, which its transform makes the box enclosing the
     /// solid (§3.3.6); its operands are the scene's solid nodes in the range
@@ -73,11 +80,64 @@ impl Tube {
     }
 }
 
-impl Primitive {
-    /// One of each kind (the torus with a quarter tube): for the keywords, the features, tests.
-    pub const ALL: [Primitive; 5] = [Primitive::Cube, Primitive::Sphere, Primitive::Cylinder, Primitive::Cone, Primitive::Torus(Tube::QUARTER)];
+/// An open frustum's radius at z = 0, in steps of 2⁻¹⁵ of its radius at z = 1 (0 to 32768
+/// steps): exact in every number type, as [`Tube`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Taper(u16);
 
-    /// The kind's place in [`Primitive::ALL`] (a torus of any tube is 4; a solid, 5, after them).
+impl Taper {
+    /// A step is 2^`STEP_EXPONENT`.
+    pub const STEP_EXPONENT: i32 = -15;
+    /// `frustum 0.5`: the taper `Primitive::ALL` names the frustum by.
+    pub const HALF: Taper = Taper(1 << 14);
+    /// An open cylinder.
+    pub const CYLINDER: Taper = Taper(1 << 15);
+
+    /// `radius` rounded to the nearest step; `None` unless `0 ≤ radius ≤ 1`.
+    pub fn from_f64(radius: f64) -> Option<Self> {
+        (0.0..=1.0).contains(&radius).then(|| Taper(libm::round(libm::ldexp(radius, -Self::STEP_EXPONENT)) as u16))
+    }
+
+    /// The radius at z = 0, exactly.
+    pub fn to_f64(self) -> f64 {
+        libm::ldexp(f64::from(self.0), Self::STEP_EXPONENT)
+    }
+
+    /// The radius at z = 0 in a number type (exact in every type).
+    pub fn radius<N: crate::number::Number>(self) -> N {
+        N::from_i32(i32::from(self.0)).times_power_of_two(Self::STEP_EXPONENT)
+    }
+
+    /// The radius in steps (what the firmware's scene constants write).
+    pub const fn steps(self) -> u16 {
+        self.0
+    }
+
+    /// From a number of steps, clamped to 0 ..= 32768.
+    pub const fn from_steps(steps: u16) -> Self {
+        if steps > 1 << 15 {
+            Taper(1 << 15)
+        } else {
+            Taper(steps)
+        }
+    }
+}
+
+impl Primitive {
+    /// One of each kind (the torus with a quarter tube, the frustum with a half taper): for the
+    /// keywords, the features, tests.
+    pub const ALL: [Primitive; 7] = [
+        Primitive::Cube,
+        Primitive::Sphere,
+        Primitive::Cylinder,
+        Primitive::Cone,
+        Primitive::Torus(Tube::QUARTER),
+        Primitive::Frustum(Taper::HALF),
+        Primitive::Triangle,
+    ];
+
+    /// The kind's place in [`Primitive::ALL`] (a torus of any tube is 4, a frustum of any taper
+    /// 5; a solid, 7, after them).
     pub const fn index(self) -> usize {
         match self {
             Primitive::Cube => 0,
@@ -85,8 +145,16 @@ impl Primitive {
             Primitive::Cylinder => 2,
             Primitive::Cone => 3,
             Primitive::Torus(_) => 4,
-            Primitive::Solid(_) => 5,
+            Primitive::Frustum(_) => 5,
+            Primitive::Triangle => 6,
+            Primitive::Solid(_) => 7,
         }
+    }
+
+    /// Whether the surface encloses a volume: only a closed primitive can be a solid's operand
+    /// (an open frustum or a triangle has no inside to combine).
+    pub const fn is_closed(self) -> bool {
+        !matches!(self, Primitive::Frustum(_) | Primitive::Triangle)
     }
 
     /// Whether this build contains the primitive's intersection code.
@@ -97,6 +165,8 @@ impl Primitive {
             Primitive::Cylinder => cfg!(feature = "cylinder"),
             Primitive::Cone => cfg!(feature = "cone"),
             Primitive::Torus(_) => cfg!(feature = "torus"),
+            Primitive::Frustum(_) => cfg!(feature = "frustum"),
+            Primitive::Triangle => cfg!(feature = "triangle"),
             Primitive::Solid(_) => cfg!(feature = "csg"),
         }
     }
@@ -109,6 +179,8 @@ impl Primitive {
             Primitive::Cylinder => "cylinder",
             Primitive::Cone => "cone",
             Primitive::Torus(_) => "torus",
+            Primitive::Frustum(_) => "frustum",
+            Primitive::Triangle => "triangle",
             Primitive::Solid(_) => "solid",
         }
     }
@@ -118,7 +190,8 @@ impl Primitive {
         match self {
             Primitive::Cube | Primitive::Solid(_) => [[0.0; 3], [1.0; 3]],
             Primitive::Sphere => [[-1.0; 3], [1.0; 3]],
-            Primitive::Cylinder | Primitive::Cone => [[-1.0, -1.0, 0.0], [1.0, 1.0, 1.0]],
+            Primitive::Cylinder | Primitive::Cone | Primitive::Frustum(_) => [[-1.0, -1.0, 0.0], [1.0, 1.0, 1.0]],
+            Primitive::Triangle => [[0.0; 3], [1.0, 1.0, 0.0]],
             Primitive::Torus(tube) => {
                 let (r, outer) = (tube.to_f64(), 1.0 + tube.to_f64());
                 [[-outer, -outer, -r], [outer, outer, r]]

@@ -84,7 +84,7 @@ impl<C: Config> Clone for Acceleration<C> {
     }
 }
 
-impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P> Acceleration<Arrays<N, K, O, POOL, DEPTH, ROW, S, P>>
+impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize> Acceleration<Arrays<N, K, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS>>
 where
     S: crate::config::SolidStorage<N> + 'static,
     P: crate::config::PaletteStorage + 'static,
@@ -256,7 +256,7 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
         let block_capsule = |index: usize, columns: (u16, u16), rows: (u16, u16)| -> N {
             let global = near.get(index).copied().unwrap_or(-N::MAX);
             // Only cylinders and cones gain: a sphere's or cube's capsule is a ball.
-            let shaped = shapes.slots().get(index).is_some_and(|p| matches!(p, Primitive::Cylinder | Primitive::Cone));
+            let shaped = shapes.slots().get(index).is_some_and(|p| matches!(p, Primitive::Cylinder | Primitive::Cone | Primitive::Frustum(_)));
             let block = if shaped { capsules_of(index).and_then(|capsule| map.block_depth_bound(&capsule, columns, rows)) } else { None };
             match block {
                 Some(bound) if bound > global => bound,

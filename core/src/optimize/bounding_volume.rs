@@ -60,6 +60,13 @@ pub const VOLUMES: [[[f64; 3]; 8]; 4] = [
     [[0.0, 0.0, 0.0], [0.0, 0.0, 0.0], [0.0, 0.0, 0.0], [0.0, 0.0, 0.0], [-1.0, -1.0, 1.0], [1.0, -1.0, 1.0], [1.0, 1.0, 1.0], [-1.0, 1.0, 1.0]],
 ];
 
+/// The unit triangle's volume: the triangle itself, its last vertex repeated, twice (it is flat).
+const TRIANGLE_VOLUME: [[f64; 3]; 8] = [[0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 1.0, 0.0], [0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 1.0, 0.0]];
+
+/// The unit triangle's faces: its three edges and its plane from both sides.
+const TRIANGLE_FACES: [([f64; 3], f64); 6] =
+    [([-1.0, 0.0, 0.0], 0.0), ([0.0, -1.0, 0.0], 0.0), ([1.0, 1.0, 0.0], 1.0), ([0.0, 0.0, 1.0], 0.0), ([0.0, 0.0, -1.0], 0.0), ([0.0, 0.0, 1.0], 0.0)];
+
 /// The faces of each unit volume as half-spaces `n·q ≤ c` in object space (for depth bounds).
 /// Unused slots repeat a face.
 const FACES: [[([f64; 3], f64); 6]; 4] = [
@@ -78,8 +85,12 @@ pub fn unit_volume(primitive: Primitive) -> [[f64; 3]; 8] {
             VOLUMES[1].map(|[x, y, z]| [x * reach, y * reach, z * half])
         }
         // A solid's box is the unit cube through its transform.
-        Primitive::Solid(_) => VOLUMES[0],
-        other => VOLUMES[other.index()],
+        Primitive::Cube | Primitive::Solid(_) => VOLUMES[0],
+        Primitive::Sphere => VOLUMES[1],
+        // A frustum is never wider than its unit end: the cylinder's box.
+        Primitive::Cylinder | Primitive::Frustum(_) => VOLUMES[2],
+        Primitive::Cone => VOLUMES[3],
+        Primitive::Triangle => TRIANGLE_VOLUME,
     }
 }
 
@@ -90,8 +101,11 @@ fn unit_faces(primitive: Primitive) -> [([f64; 3], f64); 6] {
             let (reach, half) = (1.0 + tube.to_f64(), tube.to_f64());
             FACES[1].map(|(n, _)| (n, if n[2] != 0.0 { half } else { reach }))
         }
-        Primitive::Solid(_) => FACES[0],
-        other => FACES[other.index()],
+        Primitive::Cube | Primitive::Solid(_) => FACES[0],
+        Primitive::Sphere => FACES[1],
+        Primitive::Cylinder | Primitive::Frustum(_) => FACES[2],
+        Primitive::Cone => FACES[3],
+        Primitive::Triangle => TRIANGLE_FACES,
     }
 }
 
@@ -149,13 +163,20 @@ impl ObjectGeometry {
                 }
                 Some(8)
             }
-            Primitive::Cylinder => {
+            Primitive::Cylinder | Primitive::Frustum(_) => {
+                let near = if let Primitive::Frustum(taper) = self.primitive { taper.to_f64() } else { 1.0 };
                 for k in 0..SIDES {
                     let (x, y) = ring(k);
-                    out[2 * k] = world([x, y, 0.0]);
+                    out[2 * k] = world([x * near, y * near, 0.0]);
                     out[2 * k + 1] = world([x, y, 1.0]);
                 }
                 Some(2 * SIDES)
+            }
+            Primitive::Triangle => {
+                for (slot, vertex) in out.iter_mut().zip(&TRIANGLE_VOLUME[..3]) {
+                    *slot = world(*vertex);
+                }
+                Some(3)
             }
             Primitive::Cone => {
                 out[0] = world([0.0; 3]);
@@ -243,7 +264,7 @@ impl ObjectGeometry {
     /// axis, with the radius reaching the 16-gons circumscribed about their circles; spheres and
     /// cubes a point and their bounding sphere.
     pub fn bounding_capsule(&self) -> ([f64; 3], [f64; 3], f64) {
-        if matches!(self.primitive, Primitive::Cylinder | Primitive::Cone) {
+        if matches!(self.primitive, Primitive::Cylinder | Primitive::Cone | Primitive::Frustum(_)) {
             let start = self.world_from_object.transform_point([0.0; 3]);
             let end = self.world_from_object.transform_point([0.0, 0.0, 1.0]);
             let mut points = [[0.0; 3]; MAX_POINTS];

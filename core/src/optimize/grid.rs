@@ -90,7 +90,7 @@ impl<C: Config> Clone for Grid<C> {
     }
 }
 
-impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P> Grid<Arrays<N, K, O, POOL, DEPTH, ROW, S, P>>
+impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize> Grid<Arrays<N, K, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS>>
 where
     S: crate::config::SolidStorage<N> + 'static,
     P: crate::config::PaletteStorage + 'static,

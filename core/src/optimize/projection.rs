@@ -489,6 +489,17 @@ mod tests {
                 Primitive::Sphere => x * x + y * y + z * z <= 1.0,
                 Primitive::Cylinder => x * x + y * y <= 1.0,
                 Primitive::Cone => x * x + y * y <= z * z,
+                Primitive::Frustum(taper) => {
+                    let radius = taper.to_f64() + (1.0 - taper.to_f64()) * z.abs();
+                    x * x + y * y <= radius * radius
+                }
+                Primitive::Triangle => {
+                    let (u, v) = (x.abs(), y.abs());
+                    if u + v <= 1.0 {
+                        return [u, v, 0.0];
+                    }
+                    false
+                }
                 Primitive::Torus(tube) => {
                     let (r, reach) = (tube.to_f64(), 1.0 + tube.to_f64());
                     let (x, y, z) = (x * reach, y * reach, z * r);

@@ -150,7 +150,7 @@ pub fn heapsort<S: ?Sized>(items: &mut S, len: usize, less: impl Fn(&S, usize, u
 /// rounding like [`depth_bound`].
 pub fn block_depth_bound(screen: &Screen, geometry: &ObjectGeometry, columns: (u16, u16), rows: (u16, u16)) -> Option<f64> {
     use crate::model::Primitive;
-    if !matches!(geometry.primitive, Primitive::Cylinder | Primitive::Cone) {
+    if !matches!(geometry.primitive, Primitive::Cylinder | Primitive::Cone | Primitive::Frustum(_)) {
         return None;
     }
     let (a, b, radius) = geometry.bounding_capsule();

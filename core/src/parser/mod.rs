@@ -45,14 +45,16 @@
 //!   or the end of the input, naming the solid's first line (a leaf's own line when it is
 //!   singular).
 
+pub mod nff;
 mod number;
+mod polygon;
 #[cfg(test)]
 mod tests;
 
 
 use crate::storage::List;
 use crate::model::{SceneError, SceneErrorKind, Token};
-use crate::model::{Antialias, Light, LightSource, Description, ObjectDescription, Optimizations, Primitive, Projection, Tube, SceneDescription, Viewport, Window, MAX_DEPTH, MAX_LIGHTS};
+use crate::model::{Antialias, Light, LightSource, Description, ObjectDescription, Optimizations, Primitive, Projection, Taper, Tube, SceneDescription, Viewport, Window, MAX_DEPTH, MAX_LIGHTS};
 use crate::model::{enclosing_transform, Operation, SolidNode, SolidRange, MAX_SOLID_NODES};
 use crate::model::Rgb4;
 
@@ -198,6 +200,7 @@ macro_rules! keywords {
                 match self {
                     $(Keyword::$variant => ($fewest, $most, $usage),)*
                     Keyword::Primitive(Primitive::Torus(_)) => (1, Some(1), "torus R"),
+                    Keyword::Primitive(Primitive::Frustum(_)) => (1, Some(1), "frustum R"),
                     Keyword::Primitive(primitive) => (0, Some(0), primitive.name()),
                     Keyword::Solid(operation) => (0, Some(0), operation.name()),
                 }
@@ -461,8 +464,12 @@ fn statement<L: List<ObjectDescription>>(
         Keyword::Primitive(primitive) => {
             let primitive = match primitive {
                 Primitive::Torus(_) => Primitive::Torus(tube(&s)?),
+                Primitive::Frustum(_) => Primitive::Frustum(taper(&s)?),
                 other => other,
             };
+            if !solids.open.is_empty() && !primitive.is_closed() {
+                return Err(s.error(SceneErrorKind::OpenSurfaceInSolid { primitive: primitive.name() }));
+            }
             if solids.open.is_empty() {
                 finish_object(scene, solids)?;
                 scene
@@ -598,6 +605,14 @@ fn tube(s: &Statement) -> Result<Tube, SceneError> {
     let radius = s.real(0, "torus")?;
     Tube::from_f64(radius).ok_or_else(|| {
         s.error(SceneErrorKind::ValueOutOfRange { what: "torus", token: Token::new(s.arg(0)), range: "between 0 and 1, a ring torus's tube radius" })
+    })
+}
+
+/// `frustum R`: the radius at z = 0 (0 ≤ R ≤ 1), to the nearest 2⁻¹⁵ (`Taper`).
+fn taper(s: &Statement) -> Result<Taper, SceneError> {
+    let radius = s.real(0, "frustum")?;
+    Taper::from_f64(radius).ok_or_else(|| {
+        s.error(SceneErrorKind::ValueOutOfRange { what: "frustum", token: Token::new(s.arg(0)), range: "from 0 to 1, the radius at z = 0 of a frustum whose radius at z = 1 is 1" })
     })
 }
 

@@ -178,6 +178,22 @@ fn a_torus_takes_its_tube_radius_to_the_nearest_step() {
 }
 
 #[test]
+fn frusta_and_triangles_are_open_surfaces_outside_solids_only() {
+    let scene = ok("frustum 0.5\nfrustum 1\nfrustum 0\ntriangle\n  scale 2 3 1");
+    assert_eq!(scene.objects[0].primitive, Primitive::Frustum(crate::model::Taper::HALF));
+    assert_eq!(scene.objects[1].primitive, Primitive::Frustum(crate::model::Taper::CYLINDER));
+    assert_eq!(scene.objects[2].primitive, Primitive::Frustum(crate::model::Taper::from_steps(0)));
+    assert_eq!(scene.objects[3].primitive, Primitive::Triangle);
+    for bad in ["frustum 1.5", "frustum -0.1"] {
+        assert!(matches!(err(bad).kind, SceneErrorKind::ValueOutOfRange { what: "frustum", .. }), "{bad}");
+    }
+    let error = err("union\n  sphere\n  triangle\nend");
+    assert_eq!(error, SceneError { line: 3, kind: SceneErrorKind::OpenSurfaceInSolid { primitive: "triangle" } });
+    assert!(error.to_string().starts_with("line 3: a triangle is an open surface, with no inside"), "{error}");
+    assert_eq!(err("difference\n  cube\n  frustum 0.5\nend").kind, SceneErrorKind::OpenSurfaceInSolid { primitive: "frustum" });
+}
+
+#[test]
 fn a_new_object_has_the_getobject_defaults() {
     let scene = ok("cube\ncylinder\ncone\nsphere");
     let primitives: Vec<_> = scene.objects.iter().map(|o| o.primitive).collect();
@@ -624,7 +640,7 @@ fn exact_messages() {
         ("viewplane 1e400", "line 1: viewplane D: number `1e400` is out of range (too large for a 64-bit float)"),
         ("window 1 0 0 1", "line 1: window: X1 must be less than X2"),
         ("sphere\nscale 0 1 1", "line 2: singular transform: the object's transform cannot be inverted"),
-        ("ka 1", "line 1: `ka` changes the most recent object, but no object has started yet (start one with cube, sphere, cylinder, cone or torus, or a solid: union, intersection or difference)"),
+        ("ka 1", "line 1: `ka` changes the most recent object, but no object has started yet (start one with cube, sphere, cylinder, cone, torus, frustum or triangle, or a solid: union, intersection or difference)"),
         ("parallel 0 0 0", "line 1: the direction is the zero vector (or too small or too large for its length to be computed)"),
     ] {
         assert_eq!(err(text).to_string(), message);
@@ -661,7 +677,7 @@ fn chapter_five_statements_parse_with_their_defaults_and_ranges() {
     check("antialias 0.1 5", 1, &["antialias L: `5` is out of range (must be an integer from 1 to 4)"]);
     check("antialias on", 1, &["antialias T: malformed number `on`"]);
     check("light point 0 0 0 -1", 1, &["light I: `-1` is out of range (must be at least 0)"]);
-    check("light point 0 0 0\nlight point 0 0 0\nlight point 0 0 0\nlight point 0 0 0\nlight point 0 0 0", 5, &["too many lights: a scene holds at most 4"]);
+    check(&"light point 0 0 0\n".repeat(9), 9, &["too many lights: a scene holds at most 8"]);
 }
 
 /// The nodes of the scene's solids as a compact string: `P` a primitive (its keyword's first

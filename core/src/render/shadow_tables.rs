@@ -54,11 +54,12 @@ fn with_more_lights_culling<N: Number, R, C: Config<Number = N>>(
     body: impl FnOnce(&[ShadowCulling<'_, N, C::Index>]) -> R,
 ) -> R {
     const MORE: usize = MAX_LIGHTS - 1;
+    let more = scene.more_lights.len().clamp(1, MORE);
     // One table of each light after the first, one after the other.
-    let mut light_cones = C::PerObjectPerOtherLight::<DirectionChord<N>>::filled(count.saturating_mul(MORE), DirectionChord::ALWAYS);
-    let mut blockers = C::PerObjectPerOtherLight::<BlockerSet>::filled(count.saturating_mul(MORE), BlockerSet::EMPTY);
-    let per_light = light_cones.slots().len().min(blockers.slots().len()) / MORE;
-    if per_light == 0 {
+    let mut light_cones = C::PerObjectPerOtherLight::<DirectionChord<N>>::filled(count.saturating_mul(more), DirectionChord::ALWAYS);
+    let mut blockers = C::PerObjectPerOtherLight::<BlockerSet>::filled(count.saturating_mul(more), BlockerSet::EMPTY);
+    let per_light = light_cones.slots().len().min(blockers.slots().len()) / more;
+    if per_light < count {
         return body(&[first]);
     }
     let mut lists: [BlockerLists<C>; MORE] = core::array::from_fn(|_| BlockerLists::none());

@@ -13,7 +13,7 @@ use crate::number::Number;
 use crate::optimize::bounding_sphere::BoundingSphere;
 use crate::optimize::ObjectBounds;
 use crate::model::{SceneError, SceneErrorKind};
-use crate::model::{Optimizations, Primitive, MAX_LIGHTS};
+use crate::model::{Optimizations, Primitive};
 use crate::light::{PreparedLight, PreparedLightSource};
 use crate::config::{Config, PaletteStorage};
 #[cfg(feature = "ray-tree")]
@@ -54,9 +54,10 @@ impl<N: Number, C: Config<Number = N>> Prepared<C> {
         self.camera = parts.camera;
         self.light = parts.light;
         self.light_intensity = parts.light_intensity;
-        self.more_lights.clear();
+        crate::storage::List::clear(&mut self.more_lights);
         for source in parts.more_lights {
-            self.more_lights.push(*source).map_err(|_| SceneError { line: 0, kind: SceneErrorKind::TooManyLights { capacity: MAX_LIGHTS } })?;
+            let capacity = <C::OtherLights<PreparedLightSource<N>> as crate::storage::List<_>>::CAPACITY.saturating_add(1);
+            crate::storage::List::push(&mut self.more_lights, *source).map_err(|_| SceneError { line: 0, kind: SceneErrorKind::TooManyLights { capacity } })?;
         }
         self.depth = parts.depth;
         self.antialias = parts.antialias;
@@ -218,7 +219,7 @@ pub fn write_prepared_ahead<N: Number, C: Config<Number = N>>(scene: &Prepared<C
 /// `MORE_LIGHTS_AHEAD`, and `OPTICS_AHEAD` and `SPHERES_AHEAD` (the ray tree's, empty without it).
 fn write_tree_ahead<N: Number, C: Config<Number = N>>(scene: &Prepared<C>, out: &mut dyn Write) -> fmt::Result {
     writeln!(out, "pub static MORE_LIGHTS_AHEAD: [microtrace::light::PreparedLightSource<Number>; {}] = [", scene.more_lights.len())?;
-    for source in &scene.more_lights {
+    for source in scene.more_lights.iter() {
         let (kind, position) = match source.light {
             PreparedLight::Point(position) => ("Point", position),
             PreparedLight::Direction(direction) => ("Direction", direction),
@@ -307,6 +308,7 @@ fn object_literal<N: Number>(object: &crate::model::Object<N>, out: &mut dyn Wri
 fn primitive_path(primitive: Primitive, out: &mut dyn Write) -> fmt::Result {
     match primitive {
         Primitive::Torus(tube) => write!(out, "microtrace::model::Primitive::Torus(microtrace::model::Tube::from_steps({}))", tube.steps()),
+        Primitive::Frustum(taper) => write!(out, "microtrace::model::Primitive::Frustum(microtrace::model::Taper::from_steps({}))", taper.steps()),
         Primitive::Solid(range) => write!(out, "microtrace::model::Primitive::Solid(microtrace::model::SolidRange {{ first: {}, count: {} }})", range.first, range.count),
         other => write!(out, "microtrace::model::Primitive::{other:?}"),
     }

@@ -23,7 +23,7 @@ use crate::optimize::space_grid::SpaceGrid;
 use crate::optimize::{Acceleration, Tuning};
 use crate::model::{SceneError, SceneErrorKind};
 use crate::scene::range::{self, RayOrigins};
-use crate::model::{Antialias, Description, ObjectDescription, Optimizations, Viewport, Window, MAX_LIGHTS};
+use crate::model::{Antialias, Description, ObjectDescription, Optimizations, Viewport, Window};
 use crate::shading::ShadingConstants;
 use crate::model::PreparedSolidNode;
 #[cfg(feature = "csg")]
@@ -98,7 +98,7 @@ pub struct Prepared<C: Config> {
     /// shading multiplies by it.
     pub light_intensity: C::Number,
     /// The lights of later `light` statements (chapter 5).
-    pub more_lights: Vec<PreparedLightSource<C::Number>, { MAX_LIGHTS - 1 }>,
+    pub more_lights: C::OtherLights<PreparedLightSource<C::Number>>,
     /// The ray tree (chapter 5): the objects' optics, indexed like `objects`, empty when no
     /// object reflects or transmits; and the tree's depth (1: primary rays only).
     #[cfg(feature = "ray-tree")]
@@ -137,7 +137,7 @@ impl<C: Config> core::fmt::Debug for Prepared<C> {
     }
 }
 
-impl<N: Number + 'static, const MAX_OBJECTS: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P> Prepared<Arrays<N, MAX_OBJECTS, O, POOL, DEPTH, ROW, S, P>>
+impl<N: Number + 'static, const MAX_OBJECTS: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize> Prepared<Arrays<N, MAX_OBJECTS, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS>>
 where
     S: crate::config::SolidStorage<N> + 'static,
     P: crate::config::PaletteStorage + 'static,
@@ -204,7 +204,7 @@ impl<N: Number, C: Config<Number = N>> Prepared<C> {
             camera: Camera::UNSET,
             light: PreparedLight::Point(Vector3::zero()),
             light_intensity: N::ZERO,
-            more_lights: Vec::new(),
+            more_lights: Default::default(),
             #[cfg(feature = "ray-tree")]
             optics: C::PerObjectList::default(),
             #[cfg(feature = "ray-tree")]
@@ -265,8 +265,10 @@ where
         self.more_lights.clear();
         for source in &description.more_lights {
             let light = PreparedLight::new(source.light, source.line)?;
-            // Capacities are equal, so every light fits.
-            let _ = self.more_lights.push(PreparedLightSource { light, intensity: N::from_f64(source.intensity) });
+            let capacity = <C::OtherLights<PreparedLightSource<N>> as List<_>>::CAPACITY.saturating_add(1);
+            self.more_lights
+                .push(PreparedLightSource { light, intensity: N::from_f64(source.intensity) })
+                .map_err(|_| SceneError { line: source.line, kind: SceneErrorKind::TooManyLights { capacity } })?;
         }
         self.depth = description.depth;
         self.antialias = match description.antialias {

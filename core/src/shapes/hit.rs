@@ -1,10 +1,10 @@
 //! What a primitive's intersection returns: the hit, and the nearest (`intersect`) or any
 //! (`occluded`) of a primitive's surface crossings.
 
-#[cfg(any(feature = "cone", feature = "cylinder"))]
+#[cfg(any(feature = "cone", feature = "cylinder", feature = "frustum"))]
 use super::ScaledInterval;
 use crate::geometry::Vector3;
-#[cfg(any(feature = "cone", feature = "cylinder"))]
+#[cfg(any(feature = "cone", feature = "cylinder", feature = "frustum"))]
 use crate::number::Number;
 
 /// A hit in object space: the ray parameter and the outward normal there (not normalised).
@@ -16,7 +16,7 @@ pub struct Hit<N> {
 
 /// The nearest of a primitive's crossings (t, normal) inside `interval`; `None` entries are
 /// misses.
-#[cfg(any(feature = "cone", feature = "cylinder"))]
+#[cfg(any(feature = "cone", feature = "cylinder", feature = "frustum"))]
 #[inline]
 pub(super) fn nearest<N: Number, const K: usize>(crossings: [Option<(N, Vector3<N>)>; K], interval: ScaledInterval<N>) -> Option<Hit<N>> {
     let mut best: Option<Hit<N>> = None;
@@ -29,7 +29,7 @@ pub(super) fn nearest<N: Number, const K: usize>(crossings: [Option<(N, Vector3<
 }
 
 /// Whether any of the crossings is inside `interval`.
-#[cfg(any(feature = "cone", feature = "cylinder"))]
+#[cfg(any(feature = "cone", feature = "cylinder", feature = "frustum"))]
 #[inline]
 pub(super) fn any<N: Number, const K: usize>(crossings: [Option<(N, Vector3<N>)>; K], interval: ScaledInterval<N>) -> bool {
     crossings.into_iter().flatten().any(|(t, _)| interval.contains(t))

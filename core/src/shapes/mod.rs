@@ -1,5 +1,5 @@
-//! The four unit primitives of §4.2.5 (fig 4.6) and the ring torus (§5.2.1; `torus.rs`, its
-//! quartic solved by bracketing in `polynomial.rs`), each with `intersect` (nearest hit and its
+//! The four unit primitives of §4.2.5 (fig 4.6), the ring torus (§5.2.1; `torus.rs`, its
+//! quartic solved by bracketing in `polynomial.rs`), and NFF's open frustum and triangle, each with `intersect` (nearest hit and its
 //! normal, for primary rays) and the cheaper `occluded` (any hit, for shadow rays), in the
 //! object's own space (§4.4–4.6, RAYINTER.C).
 //!
@@ -23,14 +23,18 @@ mod cone;
 mod cube;
 #[cfg(feature = "cylinder")]
 mod cylinder;
+#[cfg(feature = "frustum")]
+mod frustum;
 #[cfg(feature = "torus")]
 mod polynomial;
-#[cfg(any(feature = "sphere", feature = "cylinder", feature = "cone"))]
+#[cfg(any(feature = "sphere", feature = "cylinder", feature = "cone", feature = "frustum"))]
 mod quadratic;
 #[cfg(feature = "sphere")]
 mod sphere;
 #[cfg(feature = "torus")]
 mod torus;
+#[cfg(feature = "triangle")]
+mod triangle;
 
 pub use bounds::{Interval, ScaledInterval};
 pub use hit::Hit;
@@ -67,6 +71,10 @@ impl Primitive {
             Primitive::Cone => cone::intersect(ray, interval),
             #[cfg(feature = "torus")]
             Primitive::Torus(tube) => torus::intersect(ray, interval, tube.radius()),
+            #[cfg(feature = "frustum")]
+            Primitive::Frustum(taper) => frustum::intersect(ray, interval, taper.radius()),
+            #[cfg(feature = "triangle")]
+            Primitive::Triangle => triangle::intersect(ray, interval),
             // Scene preparation rejects primitives that are not compiled in.
             #[allow(unreachable_patterns)]
             _ => None,
@@ -86,6 +94,10 @@ impl Primitive {
             Primitive::Cone => cone::occluded(ray, interval),
             #[cfg(feature = "torus")]
             Primitive::Torus(tube) => torus::occluded(ray, interval, tube.radius()),
+            #[cfg(feature = "frustum")]
+            Primitive::Frustum(taper) => frustum::occluded(ray, interval, taper.radius()),
+            #[cfg(feature = "triangle")]
+            Primitive::Triangle => triangle::occluded(ray, interval),
             #[allow(unreachable_patterns)]
             _ => false,
         }
@@ -146,6 +158,10 @@ impl Primitive {
             Primitive::Cone => Crossings::sorted(cone::crossings(ray), unscale),
             #[cfg(feature = "torus")]
             Primitive::Torus(tube) => Crossings::sorted(torus::all_crossings(ray, tube.radius()), unscale),
+            #[cfg(feature = "frustum")]
+            Primitive::Frustum(taper) => Crossings::sorted(frustum::crossings(ray, taper.radius()), unscale),
+            #[cfg(feature = "triangle")]
+            Primitive::Triangle => Crossings::sorted(triangle::crossings(ray), unscale),
             #[allow(unreachable_patterns)]
             _ => Crossings::sorted::<0>([], unscale),
         }
