@@ -6,7 +6,7 @@
 //!    and writes the scene as Rust constants into `OUT_DIR/scene.rs`.
 //!
 //! Environment (all optional):
-//! - `MICROTRACE_SCENE`: absolute path of a `.mts` file (default: `../scenes/snooker.mts`).
+//! - `MICROTRACE_SCENE`: absolute path of a `.mts` or `.nff` file (default: `../scenes/snooker.mts`).
 //! - `MICROTRACE_NUMBER`: `f64`, `f32`, `fixed`, `fixed16`, `f32-micromath` or `soft32` (default `f32`).
 //!   On the boards with an FPU (mps2-an386, Cortex-M4F; mps2-an505, Cortex-M33) `f32` is
 //!   `F32With<VsqrtF32>`: the FPU's square root, the same results (fpu-sqrt/src/lib.rs).
@@ -63,7 +63,8 @@ fn main() {
 
     let text = std::fs::read(&scene_path)
         .unwrap_or_else(|error| fail(&format!("cannot read the scene {}: {error}", scene_path.display())));
-    let mut description = microtrace::parser::parse::<PARSE_CAPACITY>(&text).unwrap_or_else(|error| match error.kind {
+    let parsed: Result<microtrace::model::SceneDescription<PARSE_CAPACITY>, _> = microtrace::parser::parse_file(&scene_path.to_string_lossy(), &text);
+    let mut description = parsed.unwrap_or_else(|error| match error.kind {
         microtrace::model::SceneErrorKind::TooManyObjects { .. } => fail(&format!(
             "{} objects at build time (PARSE_CAPACITY in firmware/build.rs); no board this firmware runs on has the RAM for so many",
             in_file(&scene_path, &error)

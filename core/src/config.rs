@@ -48,6 +48,9 @@ pub trait Config: 'static {
     /// The per-render lists of each object's blockers from the 128th object on, and where each
     /// object's list starts (kept when [`Config::BLOCKER_LISTS`]).
     type BlockerLists: Table<Self::Index>;
+    /// The shadow rays' hierarchy of boxes (`optimize::bvh`): its nodes, and the objects its
+    /// leaves hold, one `T` per object each (kept when [`Config::HIERARCHY`]).
+    type Hierarchy<T: Copy>: Table<T>;
     /// The ray tree's stack of nodes: at most [`Config::TREE_DEPTH`].
     type TreeStack<T: Clone>: List<T>;
     /// One row of antialiasing corners: its length is how many the render keeps (the
@@ -63,6 +66,10 @@ pub trait Config: 'static {
     /// blocker sets' capacity), so that a shadow ray tests those instead of every object from
     /// the 128th on: for scenes of thousands of objects, on a host (`render/shadow_tables.rs`).
     const BLOCKER_LISTS: bool = false;
+    /// Whether a scene of more than 128 objects gets a hierarchy of boxes for its shadow rays
+    /// (`optimize::bvh`), in place of the blocker tables, whose work grows with the pairs of
+    /// objects: a host's, for scenes of thousands of objects (Haines' SPD).
+    const HIERARCHY: bool = false;
 
     /// The grid's pool entries for a scene of `objects` objects (a table sized at run time is
     /// made this long; an array keeps its length).
@@ -183,6 +190,7 @@ where
     type GridPool<T: Copy> = [[T; POOL]; K];
     type SpaceEntries = [[u16; SPACE_ENTRIES_PER_OBJECT]; K];
     type BlockerLists = [u16; 0];
+    type Hierarchy<T: Copy> = [T; 0];
     type TreeStack<T: Clone> = heapless::Vec<T, DEPTH>;
     type CornerRow = [[u8; 3]; ROW];
     const MAX_OBJECTS: usize = K;

@@ -104,12 +104,14 @@ impl<N: Number> Config for Heap<N> {
     type GridPool<T: Copy> = Boxed<T>;
     type SpaceEntries = Boxed<u32>;
     type BlockerLists = Boxed<u32>;
+    type Hierarchy<T: Copy> = Boxed<T>;
     type TreeStack<T: Clone> = heapless::Vec<T, DEFAULT_TREE_DEPTH>;
     type CornerRow = Boxed<[u8; 3]>;
     const MAX_OBJECTS: usize = usize::MAX;
     const GRID_ENTRIES_PER_OBJECT: usize = DEFAULT_GRID_ENTRIES_PER_OBJECT;
     const TREE_DEPTH: usize = DEFAULT_TREE_DEPTH;
     const BLOCKER_LISTS: bool = true;
+    const HIERARCHY: bool = true;
 
     fn grid_entries(objects: usize) -> usize {
         objects.max(GRID_POOL_OBJECTS_AT_LEAST).saturating_mul(Self::GRID_ENTRIES_PER_OBJECT)

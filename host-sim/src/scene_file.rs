@@ -49,15 +49,14 @@ pub fn in_file(path: &Path, error: anyhow::Error) -> anyhow::Error {
 pub fn load(path: &Path) -> anyhow::Result<Box<HostScene>> {
     let bytes = std::fs::read(path).with_context(|| format!("cannot read scene {}", path.display()))?;
     let name = path.file_name().map(|name| name.to_string_lossy().to_ascii_lowercase()).unwrap_or_default();
-    let parsed = if name.ends_with(".nff.gz") {
-        let mut text = Vec::new();
-        std::io::Read::read_to_end(&mut flate2::read::MultiGzDecoder::new(&bytes[..]), &mut text)
-            .with_context(|| format!("{}: not a readable gzip file", path.display()))?;
-        microtrace::parser::nff::parse_into_list(&text)
-    } else if name.ends_with(".nff") {
-        microtrace::parser::nff::parse_into_list(&bytes)
-    } else {
-        microtrace::parser::parse_into_list(&bytes)
+    let parsed = match name.strip_suffix(".gz") {
+        Some(inner) if microtrace::parser::is_nff(inner) => {
+            let mut text = Vec::new();
+            std::io::Read::read_to_end(&mut flate2::read::MultiGzDecoder::new(&bytes[..]), &mut text)
+                .with_context(|| format!("{}: not a readable gzip file", path.display()))?;
+            microtrace::parser::parse_file(inner, &text)
+        }
+        _ => microtrace::parser::parse_file(&name, &bytes),
     };
     match parsed {
         Ok(scene) => Ok(Box::new(scene)),

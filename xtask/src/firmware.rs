@@ -354,7 +354,8 @@ fn primitive_features(scene: &Path) -> Result<Vec<&'static str>, String> {
 /// errors in the one format of scene errors (docs/bad-input.md): `FILE:line N: reason`.
 fn parse_scene(scene: &Path) -> Result<Box<SceneDescription<FIRMWARE_SCENE_CAPACITY>>, String> {
     let text = std::fs::read(scene).map_err(|error| format!("scene {}: {error}", scene.display()))?;
-    let description = microtrace::parser::parse::<FIRMWARE_SCENE_CAPACITY>(&text).map_err(|error| {
+    let parsed: Result<SceneDescription<FIRMWARE_SCENE_CAPACITY>, _> = microtrace::parser::parse_file(&scene.to_string_lossy(), &text);
+    let description = parsed.map_err(|error| {
         let message = if error.line == 0 { format!("{}: {error}", scene.display()) } else { format!("{}:{error}", scene.display()) };
         match error.kind {
             microtrace::model::SceneErrorKind::TooManyObjects { .. } => format!(

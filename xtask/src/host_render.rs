@@ -18,8 +18,8 @@ use crate::firmware::{FIRMWARE_SCENE_CAPACITY, FIRMWARE_SIZE};
 /// at the firmware's size in `number` with `optimizations` (`scene`: the scene's own).
 pub fn render(scene: &Path, number: &str, optimizations: &str) -> Result<Vec<u8>, String> {
     let text = std::fs::read(scene).map_err(|error| format!("{}: {error}", scene.display()))?;
-    let mut description = microtrace::parser::parse::<FIRMWARE_SCENE_CAPACITY>(&text)
-        .map_err(|error| format!("{}: {error}", scene.display()))?;
+    let parsed: Result<microtrace::model::SceneDescription<FIRMWARE_SCENE_CAPACITY>, _> = microtrace::parser::parse_file(&scene.to_string_lossy(), &text);
+    let mut description = parsed.map_err(|error| format!("{}: {error}", scene.display()))?;
     description.fit_to_size(FIRMWARE_SIZE.0, FIRMWARE_SIZE.1);
     if optimizations != "scene" {
         description.optimizations = Optimizations::from_list(optimizations).map_err(|name| format!("unknown optimization `{name}`"))?;

@@ -61,6 +61,8 @@ fn contains<N: Number>(primitive: Primitive, p: Vector3<N>) -> bool {
         }
         // A solid is never its own leaf; open surfaces enclose nothing (and no solid has them).
         Primitive::Solid(_) | Primitive::Frustum(_) | Primitive::Triangle => false,
+        #[cfg(feature = "triangle")]
+        Primitive::Patch(_) => false,
     }
 }
 

@@ -34,6 +34,6 @@ pub use light::{Light, LightSource, MAX_LIGHTS};
 pub use material::{Material, PreparedMaterial};
 pub use object::{Object, Objects};
 pub use optimizations::Optimizations;
-pub use primitive::{Primitive, SolidRange, Taper, Tube};
+pub use primitive::{Primitive, SolidRange, Taper, Tube, VertexNormals};
 pub use solid::{enclosing_transform, for_each_node_box, solid_needs_and_box, Operation, PreparedSolidNode, SolidNeeds, SolidNode, MAX_HELD_SPANS, MAX_SOLID_NODES, NO_SKIP, MAX_SOLID_STACK, MAX_SPANS};
 pub use view::{Projection, Viewport, Window};

@@ -25,6 +25,12 @@ pub enum Primitive {
     /// The unit triangle (0,0,0), (1,0,0), (0,1,0) in the plane z = 0, seen from both sides: its
     /// transform maps it onto any triangle (NFF's polygons and patches, split into triangles).
     Triangle,
+    /// The unit triangle with a normal at each corner (NFF's `pp`, a polygonal patch): shaded
+    /// with the normal interpolated across it. Not a keyword (the NFF reader makes it): no
+    /// `Primitive::ALL` entry; to the optimizations and features, a triangle. Only with the
+    /// `triangle` feature: its 18 bytes of normals would grow every object of a build without.
+    #[cfg(feature = "triangle")]
+    Patch(VertexNormals),
     /// A solid of constructive solid geometry (`union`, `intersection`, `difference` … `end`):
     /// to the optimizations the unit cube, which its transform makes the box enclosing the
     /// solid (§3.3.6); its operands are the scene's solid nodes in the range
@@ -77,6 +83,37 @@ impl Tube {
         } else {
             Tube(steps)
         }
+    }
+}
+
+/// A patch's normals at its corners (0,0,0), (1,0,0), (0,1,0), in object space: the world
+/// normals carried back through the transform (so that the shading normal interpolated here
+/// and carried forward as any object's is the world normals' interpolation), scaled together
+/// so that the largest component is 1, in steps of 2⁻¹⁵ (exact in every number type, and a
+/// plain value as [`Tube`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct VertexNormals(pub [[i16; 3]; 3]);
+
+impl VertexNormals {
+    /// A step is 2^`STEP_EXPONENT`.
+    pub const STEP_EXPONENT: i32 = -15;
+
+    /// The three normals scaled together and rounded to steps; `None` when all are zero or
+    /// any is not finite.
+    pub fn from_f64(normals: [[f64; 3]; 3]) -> Option<Self> {
+        let largest = normals.iter().flatten().fold(0.0f64, |m, c| if c.abs() > m { c.abs() } else { m });
+        if !(largest > 0.0 && largest.is_finite()) {
+            return None;
+        }
+        let step = |c: f64| libm::round(c / largest * 32767.0) as i16;
+        Some(Self(normals.map(|n| n.map(step))))
+    }
+
+    /// The normal at barycentric (u, v): (1 − u − v)·n₀ + u·n₁ + v·n₂ (not normalised).
+    pub fn at<N: crate::number::Number>(self, u: N, v: N) -> crate::geometry::Vector3<N> {
+        let [n0, n1, n2] = self.0.map(|n| n.map(|c| N::from_i32(i32::from(c)).times_power_of_two(Self::STEP_EXPONENT)));
+        let w = N::ONE - u - v;
+        crate::geometry::Vector3::new(w * n0[0] + u * n1[0] + v * n2[0], w * n0[1] + u * n1[1] + v * n2[1], w * n0[2] + u * n1[2] + v * n2[2])
     }
 }
 
@@ -147,6 +184,8 @@ impl Primitive {
             Primitive::Torus(_) => 4,
             Primitive::Frustum(_) => 5,
             Primitive::Triangle => 6,
+            #[cfg(feature = "triangle")]
+            Primitive::Patch(_) => 6,
             Primitive::Solid(_) => 7,
         }
     }
@@ -154,7 +193,12 @@ impl Primitive {
     /// Whether the surface encloses a volume: only a closed primitive can be a solid's operand
     /// (an open frustum or a triangle has no inside to combine).
     pub const fn is_closed(self) -> bool {
-        !matches!(self, Primitive::Frustum(_) | Primitive::Triangle)
+        match self {
+            Primitive::Frustum(_) | Primitive::Triangle => false,
+            #[cfg(feature = "triangle")]
+            Primitive::Patch(_) => false,
+            _ => true,
+        }
     }
 
     /// Whether this build contains the primitive's intersection code.
@@ -167,6 +211,8 @@ impl Primitive {
             Primitive::Torus(_) => cfg!(feature = "torus"),
             Primitive::Frustum(_) => cfg!(feature = "frustum"),
             Primitive::Triangle => cfg!(feature = "triangle"),
+            #[cfg(feature = "triangle")]
+            Primitive::Patch(_) => true,
             Primitive::Solid(_) => cfg!(feature = "csg"),
         }
     }
@@ -181,6 +227,8 @@ impl Primitive {
             Primitive::Torus(_) => "torus",
             Primitive::Frustum(_) => "frustum",
             Primitive::Triangle => "triangle",
+            #[cfg(feature = "triangle")]
+            Primitive::Patch(_) => "patch",
             Primitive::Solid(_) => "solid",
         }
     }
@@ -192,6 +240,8 @@ impl Primitive {
             Primitive::Sphere => [[-1.0; 3], [1.0; 3]],
             Primitive::Cylinder | Primitive::Cone | Primitive::Frustum(_) => [[-1.0, -1.0, 0.0], [1.0, 1.0, 1.0]],
             Primitive::Triangle => [[0.0; 3], [1.0, 1.0, 0.0]],
+            #[cfg(feature = "triangle")]
+            Primitive::Patch(_) => [[0.0; 3], [1.0, 1.0, 0.0]],
             Primitive::Torus(tube) => {
                 let (r, outer) = (tube.to_f64(), 1.0 + tube.to_f64());
                 [[-outer, -outer, -r], [outer, outer, r]]

@@ -17,6 +17,8 @@ use super::grid::Grid;
 use super::projection::Screen;
 use super::build_options::SILHOUETTES;
 use super::shadow_culling::ShadowBound;
+#[cfg(feature = "acceleration-tables")]
+use super::bvh::{Bvh, BvhNode};
 use super::{capsule, grid, projection, shadow_culling, sortlist};
 
 /// Choices beyond the thesis; [`Tuning::IMPROVED`] is the default, [`Tuning::THESIS`] is the
@@ -57,6 +59,14 @@ pub struct Acceleration<C: Config> {
     stadiums: C::PerObject<Option<capsule::Stadium>>,
     #[cfg(feature = "acceleration-tables")]
     shadow: C::PerObject<ShadowBound<C::Number>>,
+    /// The shadow rays' hierarchy (`Config::HIERARCHY`, more than 128 objects): its nodes, the
+    /// objects of its leaves, and how many nodes are built (0: none).
+    #[cfg(feature = "acceleration-tables")]
+    hierarchy: C::Hierarchy<BvhNode<C::Number>>,
+    #[cfg(feature = "acceleration-tables")]
+    hierarchy_order: C::Hierarchy<C::Index>,
+    #[cfg(feature = "acceleration-tables")]
+    hierarchy_nodes: usize,
     grid: Grid<C>,
 }
 
@@ -79,6 +89,12 @@ impl<C: Config> Clone for Acceleration<C> {
             stadiums: self.stadiums.clone(),
             #[cfg(feature = "acceleration-tables")]
             shadow: self.shadow.clone(),
+            #[cfg(feature = "acceleration-tables")]
+            hierarchy: self.hierarchy.clone(),
+            #[cfg(feature = "acceleration-tables")]
+            hierarchy_order: self.hierarchy_order.clone(),
+            #[cfg(feature = "acceleration-tables")]
+            hierarchy_nodes: self.hierarchy_nodes,
             grid: self.grid.clone(),
         }
     }
@@ -102,6 +118,12 @@ where
         stadiums: [None; K],
         #[cfg(feature = "acceleration-tables")]
         shadow: [ShadowBound::UNSET; K],
+        #[cfg(feature = "acceleration-tables")]
+        hierarchy: [],
+        #[cfg(feature = "acceleration-tables")]
+        hierarchy_order: [],
+        #[cfg(feature = "acceleration-tables")]
+        hierarchy_nodes: 0,
         grid: Grid::UNSET,
     };
 }
@@ -121,6 +143,12 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
             stadiums: C::PerObject::filled(count, None),
             #[cfg(feature = "acceleration-tables")]
             shadow: C::PerObject::filled(count, ShadowBound::UNSET),
+            #[cfg(feature = "acceleration-tables")]
+            hierarchy: C::Hierarchy::filled(if C::HIERARCHY { count } else { 0 }, BvhNode::UNSET),
+            #[cfg(feature = "acceleration-tables")]
+            hierarchy_order: C::Hierarchy::filled(if C::HIERARCHY { count } else { 0 }, C::Index::default()),
+            #[cfg(feature = "acceleration-tables")]
+            hierarchy_nodes: 0,
             grid: Grid::inactive(count),
         }
     }
@@ -235,6 +263,13 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
             #[cfg(feature = "acceleration-tables")]
             if tuning.shadow_culling && optimizations.extents {
                 self.shadow.slots_mut()[index] = bounds.shadow;
+            }
+        }
+        #[cfg(feature = "acceleration-tables")]
+        {
+            self.hierarchy_nodes = 0;
+            if C::HIERARCHY && N::FLOATING_POINT && tuning.shadow_culling && optimizations.extents && count > super::shadow_culling::BlockerSet::CAPACITY {
+                self.hierarchy_nodes = build_hierarchy::<C>(count, &of, self.hierarchy.slots_mut(), self.hierarchy_order.slots_mut());
             }
         }
         if optimizations.sortlist {
@@ -410,6 +445,44 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
     pub fn extent(&self, object: usize) -> Option<Extent> {
         self.extents.slots().get(object).copied()
     }
+
+    /// The shadow rays' hierarchy, when the scene has one (`Config::HIERARCHY`).
+    #[cfg(feature = "acceleration-tables")]
+    pub fn hierarchy(&self) -> Option<Bvh<'_, N, C::Index>> {
+        let nodes = self.hierarchy.slots().get(..self.hierarchy_nodes).filter(|nodes| !nodes.is_empty())?;
+        Some(Bvh { nodes, order: self.hierarchy_order.slots() })
+    }
+}
+
+/// The hierarchy of the objects' world boxes, from each one's geometry as the tracer renders
+/// it (its 8-vertex volume's box): none (0 nodes) when an object has no geometry.
+#[cfg(feature = "acceleration-tables")]
+#[inline(never)]
+fn build_hierarchy<C: Config>(
+    count: usize,
+    of: &impl Fn(usize) -> Option<(ObjectBounds<C::Number>, Option<ObjectGeometry>)>,
+    nodes: &mut [BvhNode<C::Number>],
+    order: &mut [C::Index],
+) -> usize {
+    let mut boxes = C::Hierarchy::<super::bvh::WorldBox>::filled(count, ([0.0; 3], [0.0; 3]));
+    let Some(boxes) = boxes.slots_mut().get_mut(..count) else { return 0 };
+    for (index, slot) in boxes.iter_mut().enumerate() {
+        let Some((_, Some(geometry))) = of(index) else { return 0 };
+        let volume = geometry.volume();
+        let mut low = [f64::INFINITY; 3];
+        let mut high = [f64::NEG_INFINITY; 3];
+        for point in &volume {
+            for k in 0..3 {
+                low[k] = low[k].min(point[k]);
+                high[k] = high[k].max(point[k]);
+            }
+        }
+        if !(low.iter().chain(&high).all(|c| c.is_finite())) {
+            return 0;
+        }
+        *slot = (low, high);
+    }
+    super::bvh::build(boxes, nodes, order)
 }
 
 /// What the optimizations need of an object that depends on it alone: its primitive, its

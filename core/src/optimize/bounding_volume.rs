@@ -91,6 +91,8 @@ pub fn unit_volume(primitive: Primitive) -> [[f64; 3]; 8] {
         Primitive::Cylinder | Primitive::Frustum(_) => VOLUMES[2],
         Primitive::Cone => VOLUMES[3],
         Primitive::Triangle => TRIANGLE_VOLUME,
+        #[cfg(feature = "triangle")]
+        Primitive::Patch(_) => TRIANGLE_VOLUME,
     }
 }
 
@@ -106,6 +108,8 @@ fn unit_faces(primitive: Primitive) -> [([f64; 3], f64); 6] {
         Primitive::Cylinder | Primitive::Frustum(_) => FACES[2],
         Primitive::Cone => FACES[3],
         Primitive::Triangle => TRIANGLE_FACES,
+        #[cfg(feature = "triangle")]
+        Primitive::Patch(_) => TRIANGLE_FACES,
     }
 }
 
@@ -171,6 +175,13 @@ impl ObjectGeometry {
                     out[2 * k + 1] = world([x, y, 1.0]);
                 }
                 Some(2 * SIDES)
+            }
+            #[cfg(feature = "triangle")]
+            Primitive::Patch(_) => {
+                for (slot, vertex) in out.iter_mut().zip(&TRIANGLE_VOLUME[..3]) {
+                    *slot = world(*vertex);
+                }
+                Some(3)
             }
             Primitive::Triangle => {
                 for (slot, vertex) in out.iter_mut().zip(&TRIANGLE_VOLUME[..3]) {

@@ -11,6 +11,8 @@ mod build_options;
 
 pub mod bounding_sphere;
 pub mod bounding_volume;
+#[cfg(feature = "acceleration-tables")]
+pub mod bvh;
 pub mod capsule;
 pub mod extents;
 pub mod grid;

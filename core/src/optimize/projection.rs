@@ -493,6 +493,8 @@ mod tests {
                     let radius = taper.to_f64() + (1.0 - taper.to_f64()) * z.abs();
                     x * x + y * y <= radius * radius
                 }
+                #[cfg(feature = "triangle")]
+                Primitive::Patch(_) => return [x.abs().min(0.5), y.abs().min(0.5), 0.0],
                 Primitive::Triangle => {
                     let (u, v) = (x.abs(), y.abs());
                     if u + v <= 1.0 {

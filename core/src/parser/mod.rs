@@ -66,6 +66,21 @@ pub fn parse<const MAX_OBJECTS: usize>(text: &[u8]) -> Result<SceneDescription<M
     parse_into_list(text)
 }
 
+/// Whether a file of this name is NFF (`.nff`, any case), read by [`nff::parse_into_list`].
+pub fn is_nff(name: &str) -> bool {
+    name.len() >= 4 && name.get(name.len() - 4..).is_some_and(|end| end.eq_ignore_ascii_case(".nff"))
+}
+
+/// The one door from a scene file's name and bytes to its description: NFF when the name
+/// says so ([`is_nff`]), the `.mts` format otherwise. (A host decompresses `.nff.gz` first.)
+pub fn parse_file<L: List<ObjectDescription>>(name: &str, text: &[u8]) -> Result<Description<L>, SceneError> {
+    if is_nff(name) {
+        nff::parse_into_list(text)
+    } else {
+        parse_into_list(text)
+    }
+}
+
 /// [`parse`] into any list of objects (a host's grows as the file does); more objects than
 /// the list holds ([`List::CAPACITY`]) is an error.
 pub fn parse_into_list<L: List<ObjectDescription>>(text: &[u8]) -> Result<Description<L>, SceneError> {

@@ -10,7 +10,7 @@
 //! The model's camera always looks along −z from its eye, so the whole scene is moved into the
 //! NFF camera's frame: eye at the origin, view plane z = −1, the window the field of view.
 
-use crate::model::{Description, Light, LightSource, ObjectDescription, Palette, Primitive, Projection, Rgb4, SceneError, SceneErrorKind, Taper, Token, Viewport, Window, MAX_LIGHTS};
+use crate::model::{Description, Light, LightSource, ObjectDescription, Palette, Primitive, Projection, Rgb4, SceneError, SceneErrorKind, Taper, Token, VertexNormals, Viewport, Window, MAX_LIGHTS};
 use crate::storage::List;
 
 use super::polygon::{self, MAX_POLYGON_VERTICES};
@@ -278,13 +278,14 @@ impl<'a> Reader<'a> {
         }
         let camera = self.camera(line)?;
         let mut points: heapless::Vec<[f64; 3], MAX_POLYGON_VERTICES> = heapless::Vec::new();
+        let mut normals: heapless::Vec<[f64; 3], MAX_POLYGON_VERTICES> = heapless::Vec::new();
         for _ in 0..count as usize {
             let vertex = self.point(if patch { "pp vertex" } else { "p vertex" })?;
-            if patch {
-                // The vertex normal: read, not yet used (the patch is shaded flat, docs/nff.md).
-                self.point("pp normal")?;
-            }
             let _ = points.push(camera.point(vertex));
+            if patch {
+                let normal = self.point("pp normal")?;
+                let _ = normals.push(camera.vector(normal));
+            }
         }
         polygon::triangulate(&points, |[a, b, c]| {
             let (Some(&p0), Some(&p1), Some(&p2)) = (points.get(a), points.get(b), points.get(c)) else { return Ok(()) };
@@ -297,7 +298,20 @@ impl<'a> Reader<'a> {
             if !(area > 0.0 && third > 0.0 && area.is_finite()) {
                 return Ok(());
             }
-            let object = self.object(Primitive::Triangle, [e1, e2, normal.map(|c| c / area * third), p0], line);
+            let e3 = normal.map(|c| c / area * third);
+            // A patch's corner normals carried into object space (n ↦ (e₁·n, e₂·n, e₃·n), the
+            // inverse of how the tracer carries an object's normal out); a patch whose normals
+            // are all zero is a flat triangle.
+            let corners = match (normals.get(a), normals.get(b), normals.get(c)) {
+                (Some(&n0), Some(&n1), Some(&n2)) => VertexNormals::from_f64([n0, n1, n2].map(|n| [dot(e1, n), dot(e2, n), dot(e3, n)])),
+                _ => None,
+            };
+            #[cfg(feature = "triangle")]
+            let primitive = corners.map_or(Primitive::Triangle, Primitive::Patch);
+            // Without the triangle's code a patch is refused at preparation as a triangle is.
+            #[cfg(not(feature = "triangle"))]
+            let primitive = corners.map_or(Primitive::Triangle, |_| Primitive::Triangle);
+            let object = self.object(primitive, [e1, e2, e3, p0], line);
             if object.world_from_object.affine_inverse().is_none() {
                 return Ok(());
             }

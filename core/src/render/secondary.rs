@@ -18,6 +18,10 @@ pub(crate) fn nearest_secondary_hit<N: Number, C: Config<Number = N>>(
     ray: &Ray<N>,
     statistics: &mut Statistics,
 ) -> Option<NearestHit<N>> {
+    #[cfg(feature = "acceleration-tables")]
+    if let Some(hierarchy) = scene.acceleration.hierarchy() {
+        return nearest_in_hierarchy(scene, &hierarchy, ray, statistics);
+    }
     if scene.space_grid.is_built() {
         return nearest_in_grid(scene, ray, statistics);
     }
@@ -34,6 +38,37 @@ pub(crate) fn nearest_secondary_hit<N: Number, C: Config<Number = N>>(
             nearest = Some(hit);
         }
     }
+    nearest
+}
+
+/// [`nearest_secondary_hit`] through the hierarchy of boxes of a scene of many objects
+/// (`optimize::bvh`): the objects of the boxes along the ray, nearer boxes first and none
+/// beyond the nearest hit; ties still go to the earlier object.
+#[cfg(feature = "acceleration-tables")]
+fn nearest_in_hierarchy<N: Number, C: Config<Number = N>>(
+    scene: &Prepared<C>,
+    hierarchy: &crate::optimize::bvh::Bvh<'_, N, C::Index>,
+    ray: &Ray<N>,
+    statistics: &mut Statistics,
+) -> Option<NearestHit<N>> {
+    use crate::optimize::bvh::Walk;
+    let mut nearest: Option<NearestHit<N>> = None;
+    hierarchy.walk(ray.origin, ray.direction, N::MAX, |index| {
+        let reach = nearest.map_or(N::MAX, |best| best.t);
+        if let Some(object) = scene.objects.get(index) {
+            if scene.bounding_sphere(index).may_meet(ray.origin, ray.direction, reach) {
+                let interval = match nearest {
+                    None => Interval::unbounded(),
+                    Some(best) => Interval { max: best.t, include_max: index < best.object },
+                };
+                statistics.secondary_tests += 1;
+                if let Some(hit) = hit_object(scene, index, object, ray, &object.object_from_world.ray(ray), interval, None, statistics) {
+                    nearest = Some(hit);
+                }
+            }
+        }
+        nearest.map_or(Walk::On, |best| Walk::Within(best.t))
+    });
     nearest
 }
 

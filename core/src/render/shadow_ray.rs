@@ -174,6 +174,30 @@ fn transmitted<N: Number, C: Config<Number = N>>(
     let from_light = -to_light;
     let quantized = if culling.light_cones.is_empty() { QuantizedDirection::default() } else { QuantizedDirection::floor(from_light) };
     let set = culling.blockers.get(shaded_object).copied();
+    // A scene of many objects: its blockers from the hierarchy, multiplied in object order as
+    // below (so the product rounds the same); more than the list holds, the loop below.
+    #[cfg(feature = "acceleration-tables")]
+    if let Some(hierarchy) = scene.acceleration.hierarchy().filter(|_| culls) {
+        let mut blockers: heapless::Vec<usize, 64> = heapless::Vec::new();
+        let mut overflow = false;
+        hierarchy.visit(point, to_light, light_distance, |index| {
+            if index != shaded_object && candidate_meets(scene, &segment, culling.light_cones, (from_light, quantized), index, statistics) && blockers.push(index).is_err() {
+                overflow = true;
+            }
+            overflow
+        });
+        if !overflow {
+            blockers.sort_unstable();
+            let mut share = N::ONE;
+            for index in blockers {
+                share = share * scene.transmit(index);
+                if share == N::ZERO {
+                    break;
+                }
+            }
+            return share;
+        }
+    }
     let mut share = N::ONE;
     for index in 0..scene.objects.len() {
         if index == shaded_object {
@@ -253,6 +277,23 @@ fn blocked<N: Number, C: Config<Number = N>>(
             }
         }
         return false;
+    }
+    // A scene of many objects: the objects in the hierarchy's boxes along the ray (the same
+    // blockers, far fewer looked at; `optimize::bvh`).
+    #[cfg(feature = "acceleration-tables")]
+    if let Some(hierarchy) = scene.acceleration.hierarchy() {
+        let mut blocker = None;
+        let found = hierarchy.any(point, to_light, light_distance, |index| {
+            let meets = listed(index) && !skip(index) && candidate_meets(scene, &segment, cones, (from_light, quantized), index, statistics);
+            if meets {
+                blocker = Some(index);
+            }
+            meets
+        });
+        if let Some(index) = blocker {
+            *last_blocker = Some(C::Index::new(index));
+        }
+        return found;
     }
     let start = if set.is_some() { BlockerSet::CAPACITY } else { 0 };
     for index in start..scene.objects.len() {

@@ -36,7 +36,7 @@ pub(crate) fn with_shadow_culling<N: Number, R, C: Config<Number = N>>(
     let mut blockers = C::PerObject::<BlockerSet>::filled(objects, BlockerSet::EMPTY);
     let count = objects.min(light_cones.slots().len()).min(blockers.slots().len());
     let lists = build_shadow_tables::<N, C>(scene, scene.light, count, light_cones.slots_mut(), blockers.slots_mut());
-    let first = culling_of(scene.light, count, light_cones.slots(), blockers.slots(), &lists);
+    let first = culling_of(scene, scene.light, count, light_cones.slots(), blockers.slots(), &lists);
     if !scene.more_lights.is_empty() {
         return with_more_lights_culling(scene, count, first, body);
     }
@@ -71,20 +71,23 @@ fn with_more_lights_culling<N: Number, R, C: Config<Number = N>>(
     for ((((slot, source), cones), sets), lists) in
         culling.iter_mut().skip(1).zip(scene.more_lights.iter()).zip(light_cones.slots().chunks(per_light)).zip(blockers.slots().chunks(per_light)).zip(lists.iter())
     {
-        *slot = culling_of(source.light, count, cones, sets, lists);
+        *slot = culling_of(scene, source.light, count, cones, sets, lists);
     }
     body(culling.get(..=scene.more_lights.len()).unwrap_or(&[]))
 }
 
-/// The culling of one light from its tables (only a point light has cones).
+/// The culling of one light from its tables (only a point light has cones; a scene with the
+/// hierarchy has no blocker table, every object a candidate for it to find).
 #[cfg(feature = "acceleration-tables")]
 fn culling_of<'a, N: Number, C: Config<Number = N>>(
+    scene: &Prepared<C>,
     light: PreparedLight<N>,
     count: usize,
     light_cones: &'a [DirectionChord<N>],
     blockers: &'a [BlockerSet],
     lists: &'a BlockerLists<C>,
 ) -> ShadowCulling<'a, N, C::Index> {
+    let blockers = if scene.acceleration.hierarchy().is_some() { &[] } else { blockers };
     let cone_count = if matches!(light, PreparedLight::Point(_)) { count } else { 0 };
     let beyond = BlockersBeyond { starts: lists.starts.slots(), entries: lists.entries.slots() };
     ShadowCulling { light_cones: light_cones.get(..cone_count).unwrap_or(&[]), blockers: blockers.get(..count).unwrap_or(&[]), beyond }
@@ -190,6 +193,10 @@ fn build_shadow_tables<N: Number, C: Config<Number = N>>(
         let footprint = scene.acceleration.light_footprint(index, light);
         *cone = footprint.chord;
         *reach = footprint.reach;
+    }
+    if scene.acceleration.hierarchy().is_some() {
+        // The hierarchy finds the blockers: no table over the pairs of objects.
+        return BlockerLists::none();
     }
     let mut order = C::PerObject::<C::Index>::filled(count, C::Index::default());
     let reaches = reaches.slots().get(..count).unwrap_or(&[]);

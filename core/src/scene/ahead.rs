@@ -308,6 +308,8 @@ fn object_literal<N: Number>(object: &crate::model::Object<N>, out: &mut dyn Wri
 fn primitive_path(primitive: Primitive, out: &mut dyn Write) -> fmt::Result {
     match primitive {
         Primitive::Torus(tube) => write!(out, "microtrace::model::Primitive::Torus(microtrace::model::Tube::from_steps({}))", tube.steps()),
+        #[cfg(feature = "triangle")]
+        Primitive::Patch(normals) => write!(out, "microtrace::model::Primitive::Patch(microtrace::model::VertexNormals({:?}))", normals.0),
         Primitive::Frustum(taper) => write!(out, "microtrace::model::Primitive::Frustum(microtrace::model::Taper::from_steps({}))", taper.steps()),
         Primitive::Solid(range) => write!(out, "microtrace::model::Primitive::Solid(microtrace::model::SolidRange {{ first: {}, count: {} }})", range.first, range.count),
         other => write!(out, "microtrace::model::Primitive::{other:?}"),

@@ -75,6 +75,8 @@ impl Primitive {
             Primitive::Frustum(taper) => frustum::intersect(ray, interval, taper.radius()),
             #[cfg(feature = "triangle")]
             Primitive::Triangle => triangle::intersect(ray, interval),
+            #[cfg(feature = "triangle")]
+            Primitive::Patch(normals) => triangle::intersect_patch(ray, interval, normals),
             // Scene preparation rejects primitives that are not compiled in.
             #[allow(unreachable_patterns)]
             _ => None,
@@ -98,6 +100,8 @@ impl Primitive {
             Primitive::Frustum(taper) => frustum::occluded(ray, interval, taper.radius()),
             #[cfg(feature = "triangle")]
             Primitive::Triangle => triangle::occluded(ray, interval),
+            #[cfg(feature = "triangle")]
+            Primitive::Patch(_) => triangle::occluded(ray, interval),
             #[allow(unreachable_patterns)]
             _ => false,
         }
@@ -162,6 +166,8 @@ impl Primitive {
             Primitive::Frustum(taper) => Crossings::sorted(frustum::crossings(ray, taper.radius()), unscale),
             #[cfg(feature = "triangle")]
             Primitive::Triangle => Crossings::sorted(triangle::crossings(ray), unscale),
+            #[cfg(feature = "triangle")]
+            Primitive::Patch(_) => Crossings::sorted(triangle::crossings(ray), unscale),
             #[allow(unreachable_patterns)]
             _ => Crossings::sorted::<0>([], unscale),
         }

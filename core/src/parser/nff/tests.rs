@@ -77,7 +77,11 @@ fn cones_become_frusta_narrow_end_first() {
 fn polygons_and_patches_become_triangles() {
     let scene = ok(&format!("{VIEW}p 4\n-1 -1 0\n1 -1 0\n1 1 0\n-1 1 0\npp 3\n0 0 1 0 0 1\n1 0 1 0 0 1\n0 1 1 0 0 1\n"));
     assert_eq!(scene.objects.len(), 3);
-    assert!(scene.objects.iter().all(|o| o.primitive == Primitive::Triangle));
+    assert!(scene.objects[..2].iter().all(|o| o.primitive == Primitive::Triangle));
+    // The patch keeps its normals: all along +z in the world (toward the eye), so in object
+    // space each carried back is the plane's normal, the third axis.
+    let Primitive::Patch(normals) = scene.objects[2].primitive else { panic!("{:?}", scene.objects[2].primitive) };
+    assert_eq!(normals.0, [[0, 0, 32767]; 3]);
     // The patch's corners are where its vertices are.
     let m = scene.objects[2].world_from_object;
     let corners: Vec<[f64; 3]> = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]].iter().map(|p| m.transform_point(*p)).collect();
@@ -126,4 +130,27 @@ fn the_small_spd_scenes_read() {
         }
     }
     assert_eq!(read, 7);
+}
+
+/// A patch's shading normal, carried out of object space as any object's, is the world
+/// normals interpolated at the hit (here 1/2, 1/4, 1/4 of the three).
+#[test]
+fn a_patch_interpolates_its_world_normals() {
+    use crate::geometry::{AffineTransform, Ray, Vector3};
+    use crate::shapes::Interval;
+    let s = core::f64::consts::FRAC_1_SQRT_2;
+    let scene = ok(&format!("{VIEW}pp 3\n0 0 0 0 0 1\n1 0 0 {s} 0 {s}\n0 1 0 0 {s} {s}\n"));
+    let object = scene.objects[0];
+    let Primitive::Patch(_) = object.primitive else { panic!("{:?}", object.primitive) };
+    let object_from_world = AffineTransform::<f64>::from_matrix(&object.world_from_object.affine_inverse().unwrap());
+    let world = Ray { origin: Vector3::from_f64([0.0; 3]), direction: Vector3::from_f64([0.25, 0.25, -10.0]) };
+    let hit = object.primitive.intersect(&object_from_world.ray(&world), Interval::unbounded()).unwrap();
+    assert!((hit.t - 1.0).abs() < 1e-12, "{}", hit.t);
+    let normal = object_from_world.transposed_vector(hit.normal).to_f64();
+    let want = [0.25 * s, 0.25 * s, 0.5 + 0.5 * s];
+    let length = |v: [f64; 3]| (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+    let (a, b) = (length(normal), length(want));
+    for k in 0..3 {
+        assert!((normal[k] / a - want[k] / b).abs() < 1e-4, "{normal:?} against {want:?}");
+    }
 }
