@@ -69,3 +69,18 @@ fn transparent_blockers_through_the_hierarchy_as_without_it() {
     let statistics = same_with_every_optimization("glass spheres", description, 32);
     assert!(statistics.secondary_rays_total() > 0);
 }
+
+/// `bench --spd` end to end on two small rungs of the ladders at a small size: a row each, the
+/// ladder's fit, and an unknown scene refused by name.
+#[test]
+fn bench_spd_reports_each_scene_and_the_ladder() {
+    let run = |arguments: &[&str]| std::process::Command::new(env!("CARGO_BIN_EXE_microtrace")).args(arguments).current_dir(Path::new(env!("CARGO_MANIFEST_DIR")).join("..")).output().unwrap();
+    let output = run(&["bench", "--spd", "--spd-scenes", "tree-s6,tree-s7", "--spd-size", "16x16"]);
+    let report = String::from_utf8_lossy(&output.stdout);
+    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    assert!(report.contains("| tree-s6 | 256 |") && report.contains("| tree-s7 | 512 |"), "{report}");
+    assert!(report.contains("| tree | 256, 512 |"), "{report}");
+    let output = run(&["bench", "--spd", "--spd-scenes", "forest"]);
+    assert_eq!(output.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&output.stderr).contains("--spd-scenes: no SPD scene `forest`"), "{}", String::from_utf8_lossy(&output.stderr));
+}

@@ -79,30 +79,49 @@ pub fn triangulate<E>(points: &[[f64; 3]], mut emit: impl FnMut([usize; 3]) -> R
     }
     while remaining.len() > 3 {
         let count = remaining.len();
-        let mut clipped = false;
+        // The ear to clip: of all the polygon's ears, the one whose new edge (its diagonal) is
+        // shortest, so that the triangles stay compact (a fan of slivers across a gear's face
+        // would give every one a box across the face, which the shadow rays' hierarchy cannot
+        // tell apart). A straight or folded-back vertex is dropped at once.
+        let mut best: Option<(f64, usize, [u16; 3])> = None;
+        let mut straight = None;
         for middle in 0..count {
             let [a, b, c] = [(middle + count - 1) % count, middle, (middle + 1) % count].map(|k| remaining.get(k).copied().unwrap_or(0));
             let (pa, pb, pc) = (at(a), at(b), at(c));
             let turn = orientation(pa, pb, pc);
+            if turn == 0.0 {
+                straight = Some(middle);
+                break;
+            }
             if turn < 0.0 {
                 continue;
             }
-            // A straight or folded-back vertex (no area): drop it. An ear: no other vertex in
-            // it (vertices at its corners' places, where a polygon touches itself, do not count).
-            let ear = turn > 0.0
-                && !remaining.iter().any(|&k| {
-                    let p = at(k);
-                    k != a && k != b && k != c && p != pa && p != pb && p != pc && in_triangle(p, pa, pb, pc)
-                });
-            if turn == 0.0 || ear {
-                if ear {
-                    emit([a, b, c].map(usize::from))?;
-                }
-                remaining.remove(middle);
-                clipped = true;
-                break;
+            // An ear: no other vertex in it (vertices at its corners' places, where a polygon
+            // touches itself, do not count).
+            let diagonal = (pc[0] - pa[0]) * (pc[0] - pa[0]) + (pc[1] - pa[1]) * (pc[1] - pa[1]);
+            if best.is_some_and(|(shortest, _, _)| shortest <= diagonal) {
+                continue;
+            }
+            let ear = !remaining.iter().any(|&k| {
+                let p = at(k);
+                k != a && k != b && k != c && p != pa && p != pb && p != pc && in_triangle(p, pa, pb, pc)
+            });
+            if ear {
+                best = Some((diagonal, middle, [a, b, c]));
             }
         }
+        let clipped = match (straight, best) {
+            (Some(middle), _) => {
+                remaining.remove(middle);
+                true
+            }
+            (None, Some((_, middle, corners))) => {
+                emit(corners.map(usize::from))?;
+                remaining.remove(middle);
+                true
+            }
+            (None, None) => false,
+        };
         if !clipped {
             // No ear: the edges cross. Fan the rest.
             let first = remaining.first().copied().unwrap_or(0);

@@ -1,6 +1,6 @@
 //! `microtrace bench`: `--thesis` reproduces the thesis's Tables 4.3 and 4.4 (the
 //! optimizations); `--numbers` reports speed against error for every number type; `--scale`
-//! how memory and time grow with the objects.
+//! how memory and time grow with the objects; `--spd` Haines' SPD scenes at their standard sizes.
 
 use std::path::PathBuf;
 
@@ -8,6 +8,8 @@ use std::path::PathBuf;
 mod numbers;
 #[path = "bench_scale.rs"]
 mod scale;
+#[path = "bench_spd.rs"]
+mod spd;
 #[path = "bench_thesis.rs"]
 mod thesis;
 
@@ -22,13 +24,24 @@ pub struct BenchArgs {
     /// Memory and time against the number of objects: generated fields of spheres.
     #[arg(long)]
     pub scale: bool,
+    /// Haines' SPD scenes (scenes/spd/full) at their standard sizes: times, tests per ray, rays
+    /// a second, memory, and the growth along the size ladders.
+    #[arg(long)]
+    pub spd: bool,
+    /// --spd: only these scenes (comma-separated: balls, gears, mount, rings, teapot, tetra,
+    /// tree, and the ladders' balls-s1..s3, rings-s1..s3, tree-s6..s8).
+    #[arg(long, value_delimiter = ',')]
+    pub spd_scenes: Vec<String>,
+    /// --spd: the image size (the SPD's rules: 512x512).
+    #[arg(long, value_parser = crate::scene_file::parse_size, default_value = "512x512")]
+    pub spd_size: (u16, u16),
     /// --scale: the sphere counts, comma-separated.
     #[arg(long, value_delimiter = ',', default_value = "1000,10000,100000")]
     pub counts: Vec<usize>,
     /// --scale: the image size.
     #[arg(long, value_parser = crate::scene_file::parse_size, default_value = "320x240")]
     pub size: (u16, u16),
-    /// --scale: the number type.
+    /// --scale, --spd: the number type.
     #[arg(long, default_value = "f32")]
     pub number: String,
     /// --scale: also write each generated scene here, as spheres-COUNT.mts (to render or view).
@@ -50,12 +63,12 @@ pub struct BenchArgs {
 }
 
 pub fn run(args: BenchArgs) -> anyhow::Result<()> {
-    let chosen = [args.thesis, args.numbers, args.scale].iter().filter(|on| **on).count();
+    let chosen = [args.thesis, args.numbers, args.scale, args.spd].iter().filter(|on| **on).count();
     if chosen == 0 {
-        anyhow::bail!("choose --thesis (optimizations, Tables 4.3 and 4.4), --numbers (number types) or --scale (memory and time against the objects)");
+        anyhow::bail!("choose --thesis (optimizations, Tables 4.3 and 4.4), --numbers (number types), --scale (memory and time against the objects) or --spd (Haines' SPD scenes)");
     }
     if chosen > 1 && args.out.is_some() {
-        anyhow::bail!("--out names one report: run --thesis, --numbers and --scale separately to write each");
+        anyhow::bail!("--out names one report: run --thesis, --numbers, --scale and --spd separately to write each");
     }
     if args.thesis {
         thesis::run(&args)?;
@@ -65,6 +78,9 @@ pub fn run(args: BenchArgs) -> anyhow::Result<()> {
     }
     if args.scale {
         scale::run(&args)?;
+    }
+    if args.spd {
+        spd::run(&args)?;
     }
     Ok(())
 }
