@@ -243,15 +243,14 @@ impl<N: Number, I: Index> Bvh<'_, N, I> {
             Some(near)
         };
         let mut reach = max;
-        let mut stack: heapless::Vec<u32, STACK> = heapless::Vec::new();
-        if self.nodes.first().and_then(|root| entry(root, reach)).is_none() {
-            return;
-        }
-        let _ = stack.push(0);
-        while let Some(node) = stack.pop() {
+        // Each node on the stack with where the ray enters its box: popped, it is skipped
+        // only if the reach has shrunk below that since (its box is not tested twice).
+        let mut stack: heapless::Vec<(u32, N), STACK> = heapless::Vec::new();
+        let Some(root) = self.nodes.first().and_then(|root| entry(root, reach)) else { return };
+        let _ = stack.push((0, root));
+        while let Some((node, entered)) = stack.pop() {
             let Some(node) = self.nodes.get(node as usize) else { continue };
-            // Checked again: the reach may have shrunk since it was pushed.
-            if entry(node, reach).is_none() {
+            if entered > reach {
                 continue;
             }
             if node.count == 0 {
@@ -262,8 +261,8 @@ impl<N: Number, I: Index> Bvh<'_, N, I> {
                     _ => [1, 0],
                 };
                 for side in order {
-                    if children.get(side).copied().flatten().is_some() {
-                        let _ = stack.push(node.first + side as u32);
+                    if let Some(entered) = children.get(side).copied().flatten() {
+                        let _ = stack.push((node.first + side as u32, entered));
                     }
                 }
                 continue;
