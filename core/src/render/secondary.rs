@@ -54,19 +54,7 @@ fn nearest_in_hierarchy<N: Number, C: Config<Number = N>>(
     use crate::optimize::bvh::Walk;
     let mut nearest: Option<NearestHit<N>> = None;
     hierarchy.walk(ray.origin, ray.direction, N::MAX, |index| {
-        let reach = nearest.map_or(N::MAX, |best| best.t);
-        if let Some(object) = scene.objects.get(index) {
-            if scene.bounding_sphere(index).may_meet(ray.origin, ray.direction, reach) {
-                let interval = match nearest {
-                    None => Interval::unbounded(),
-                    Some(best) => Interval { max: best.t, include_max: index < best.object },
-                };
-                statistics.secondary_tests += 1;
-                if let Some(hit) = hit_object(scene, index, object, ray, &object.object_from_world.ray(ray), interval, None, statistics) {
-                    nearest = Some(hit);
-                }
-            }
-        }
+        consider(scene, ray, index, &mut nearest, statistics);
         nearest.map_or(Walk::On, |best| Walk::Within(best.t))
     });
     nearest
@@ -77,20 +65,29 @@ fn nearest_in_hierarchy<N: Number, C: Config<Number = N>>(
 fn nearest_in_grid<N: Number, C: Config<Number = N>>(scene: &Prepared<C>, ray: &Ray<N>, statistics: &mut Statistics) -> Option<NearestHit<N>> {
     let mut nearest: Option<NearestHit<N>> = None;
     scene.space_grid.walk(ray, scene.objects.len(), |index| {
-        let reach = nearest.map_or(N::MAX, |best| best.t);
-        if let Some(object) = scene.objects.get(index) {
-            if scene.bounding_sphere(index).may_meet(ray.origin, ray.direction, reach) {
-                let interval = match nearest {
-                    None => Interval::unbounded(),
-                    Some(best) => Interval { max: best.t, include_max: index < best.object },
-                };
-                statistics.secondary_tests += 1;
-                if let Some(hit) = hit_object(scene, index, object, ray, &object.object_from_world.ray(ray), interval, None, statistics) {
-                    nearest = Some(hit);
-                }
-            }
-        }
+        consider(scene, ray, index, &mut nearest, statistics);
         nearest.map(|best| best.t)
     });
     nearest
+}
+
+/// One candidate of a walk that meets objects in no particular order: tested when its bounding
+/// sphere lets the ray through short of the nearest hit, and the nearer hit kept; a hit at the
+/// nearest `t` so far replaces it only for an earlier object (ties to the earlier object, as in
+/// object order).
+#[inline(always)]
+fn consider<N: Number, C: Config<Number = N>>(scene: &Prepared<C>, ray: &Ray<N>, index: usize, nearest: &mut Option<NearestHit<N>>, statistics: &mut Statistics) {
+    let reach = nearest.map_or(N::MAX, |best| best.t);
+    let Some(object) = scene.objects.get(index) else { return };
+    if !scene.bounding_sphere(index).may_meet(ray.origin, ray.direction, reach) {
+        return;
+    }
+    let interval = match *nearest {
+        None => Interval::unbounded(),
+        Some(best) => Interval { max: best.t, include_max: index < best.object },
+    };
+    statistics.secondary_tests += 1;
+    if let Some(hit) = hit_object(scene, index, object, ray, &object.object_from_world.ray(ray), interval, None, statistics) {
+        *nearest = Some(hit);
+    }
 }
