@@ -468,15 +468,7 @@ fn build_hierarchy<C: Config>(
     let Some(boxes) = boxes.slots_mut().get_mut(..count) else { return 0 };
     for (index, slot) in boxes.iter_mut().enumerate() {
         let Some((_, Some(geometry))) = of(index) else { return 0 };
-        let volume = geometry.volume();
-        let mut low = [f64::INFINITY; 3];
-        let mut high = [f64::NEG_INFINITY; 3];
-        for point in &volume {
-            for k in 0..3 {
-                low[k] = low[k].min(point[k]);
-                high[k] = high[k].max(point[k]);
-            }
-        }
+        let (low, high) = geometry.world_box();
         if !(low.iter().chain(&high).all(|c| c.is_finite())) {
             return 0;
         }

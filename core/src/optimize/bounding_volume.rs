@@ -288,17 +288,23 @@ impl ObjectGeometry {
         (centre, centre, radius)
     }
 
-    /// A sphere containing the bounding volume: (centre, radius).
-    pub fn bounding_sphere(&self) -> ([f64; 3], f64) {
-        let volume = self.volume();
+    /// The world box of the bounding volume: (low, high).
+    pub fn world_box(&self) -> ([f64; 3], [f64; 3]) {
         let mut low = [f64::INFINITY; 3];
         let mut high = [f64::NEG_INFINITY; 3];
-        for p in &volume {
+        for p in &self.volume() {
             for k in 0..3 {
                 low[k] = low[k].min(p[k]);
                 high[k] = high[k].max(p[k]);
             }
         }
+        (low, high)
+    }
+
+    /// A sphere containing the bounding volume: (centre, radius).
+    pub fn bounding_sphere(&self) -> ([f64; 3], f64) {
+        let volume = self.volume();
+        let (low, high) = self.world_box();
         let centre = [0, 1, 2].map(|k| (low[k] + high[k]) / 2.0);
         let radius = volume.iter().map(|p| distance(*p, centre)).fold(0.0, f64::max);
         if let Some((ellipsoid_centre, m)) = self.ellipsoid() {
