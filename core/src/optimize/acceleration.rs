@@ -128,6 +128,10 @@ where
     };
 }
 
+/// The hierarchy's storage: boxes (references to objects, `early_split`) per object.
+#[cfg(feature = "acceleration-tables")]
+const REFERENCES_PER_OBJECT: usize = 2;
+
 impl<N: Number, C: Config<Number = N>> Acceleration<C> {
     /// Nothing built, tables for `count` objects (as many as an array holds): [`Acceleration::UNSET`]
     /// for storage sized at run time.
@@ -144,9 +148,9 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
             #[cfg(feature = "acceleration-tables")]
             shadow: C::PerObject::filled(count, ShadowBound::UNSET),
             #[cfg(feature = "acceleration-tables")]
-            hierarchy: C::Hierarchy::filled(if C::HIERARCHY { count } else { 0 }, BvhNode::UNSET),
+            hierarchy: C::Hierarchy::filled(if C::HIERARCHY { REFERENCES_PER_OBJECT * count } else { 0 }, BvhNode::UNSET),
             #[cfg(feature = "acceleration-tables")]
-            hierarchy_order: C::Hierarchy::filled(if C::HIERARCHY { count } else { 0 }, C::Index::default()),
+            hierarchy_order: C::Hierarchy::filled(if C::HIERARCHY { REFERENCES_PER_OBJECT * count } else { 0 }, C::Index::default()),
             #[cfg(feature = "acceleration-tables")]
             hierarchy_nodes: 0,
             grid: Grid::inactive(count),
@@ -455,7 +459,8 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
 }
 
 /// The hierarchy of the objects' world boxes, from each one's geometry as the tracer renders
-/// it (its 8-vertex volume's box): none (0 nodes) when an object has no geometry.
+/// it (its 8-vertex volume's box; a long triangle's cut into pieces, `early_split`): none (0
+/// nodes) when an object has no geometry.
 #[cfg(feature = "acceleration-tables")]
 #[inline(never)]
 fn build_hierarchy<C: Config>(
@@ -465,16 +470,24 @@ fn build_hierarchy<C: Config>(
     order: &mut [C::Index],
 ) -> usize {
     let mut boxes = C::Hierarchy::<super::bvh::WorldBox>::filled(count, ([0.0; 3], [0.0; 3]));
-    let Some(boxes) = boxes.slots_mut().get_mut(..count) else { return 0 };
-    for (index, slot) in boxes.iter_mut().enumerate() {
+    let mut triangles = C::Hierarchy::<Option<[[f64; 3]; 3]>>::filled(count, None);
+    let (Some(boxes), Some(triangles)) = (boxes.slots_mut().get_mut(..count), triangles.slots_mut().get_mut(..count)) else { return 0 };
+    for (index, (slot, triangle)) in boxes.iter_mut().zip(triangles.iter_mut()).enumerate() {
         let Some((_, Some(geometry))) = of(index) else { return 0 };
         let (low, high) = geometry.world_box();
         if !(low.iter().chain(&high).all(|c| c.is_finite())) {
             return 0;
         }
         *slot = (low, high);
+        *triangle = geometry.triangle();
     }
-    super::bvh::build(boxes, nodes, order)
+    // As many references as the storage holds beyond the objects (`REFERENCES_PER_OBJECT`).
+    let capacity = order.len().min(nodes.len());
+    let mut references = C::Hierarchy::<super::bvh::WorldBox>::filled(capacity, ([0.0; 3], [0.0; 3]));
+    let mut owners = C::Hierarchy::<usize>::filled(capacity, 0);
+    let used = super::early_split::split(count, &|index| boxes.get(index).copied().unwrap_or_default(), &|index| triangles.get(index).copied().flatten(), references.slots_mut(), owners.slots_mut());
+    let (Some(references), owners) = (references.slots().get(..used), owners.slots()) else { return 0 };
+    super::bvh::build(references, |reference| owners.get(reference).copied().unwrap_or(0), nodes, order)
 }
 
 /// What the optimizations need of an object that depends on it alone: its primitive, its

@@ -301,6 +301,17 @@ impl ObjectGeometry {
         (low, high)
     }
 
+    /// A flat triangle's world vertices (a triangle or a patch), `None` for other primitives.
+    pub fn triangle(&self) -> Option<[[f64; 3]; 3]> {
+        let vertices = self.volume();
+        match self.primitive {
+            Primitive::Triangle => Some([vertices[0], vertices[1], vertices[2]]),
+            #[cfg(feature = "triangle")]
+            Primitive::Patch(_) => Some([vertices[0], vertices[1], vertices[2]]),
+            _ => None,
+        }
+    }
+
     /// A sphere containing the bounding volume: (centre, radius).
     pub fn bounding_sphere(&self) -> ([f64; 3], f64) {
         let volume = self.volume();

@@ -43,9 +43,11 @@ const STACK: usize = 64;
 pub type WorldBox = ([f64; 3], [f64; 3]);
 
 /// Builds the hierarchy of `boxes` into `nodes` and `order` (each at least as long as `boxes`;
-/// a tree whose leaves hold two or more objects has fewer nodes than objects). Returns the
-/// nodes used, 0 (no hierarchy) when the storage is too small or there are no objects.
-pub fn build<N: Number, I: Index>(boxes: &[WorldBox], nodes: &mut [BvhNode<N>], order: &mut [I]) -> usize {
+/// a tree whose leaves hold two or more boxes has fewer nodes than boxes). Each box is a
+/// reference to the object `owner(box)` (one object may have several, `optimize::early_split`);
+/// the leaves list those objects. Returns the nodes used, 0 (no hierarchy) when the storage
+/// is too small or there are no boxes.
+pub fn build<N: Number, I: Index>(boxes: &[WorldBox], owner: impl Fn(usize) -> usize, nodes: &mut [BvhNode<N>], order: &mut [I]) -> usize {
     let count = boxes.len();
     if count == 0 || nodes.len() < count || order.len() < count || count > u32::MAX as usize {
         return 0;
@@ -83,6 +85,9 @@ pub fn build<N: Number, I: Index>(boxes: &[WorldBox], nodes: &mut [BvhNode<N>], 
         if let Some(slot) = nodes.get_mut(node) {
             *slot = made;
         }
+    }
+    for place in order.iter_mut() {
+        *place = I::new(owner(place.get()));
     }
     used
 }
@@ -165,8 +170,7 @@ fn split<I: Index>(members: &mut [I], depth: usize, centre: &impl Fn(&I, usize) 
 }
 
 fn area(low: [f64; 3], high: [f64; 3]) -> f64 {
-    let d = [0, 1, 2].map(|k| (high[k] - low[k]).max(0.0));
-    d[0] * d[1] + d[1] * d[2] + d[2] * d[0]
+    super::early_split::area(&(low, high))
 }
 
 /// The box around the boxes.
@@ -192,7 +196,7 @@ pub struct Bvh<'a, N, I> {
 impl<N: Number, I: Index> Bvh<'_, N, I> {
     /// Whether `test` is true of an object in a leaf whose box the segment from `origin` along
     /// `direction` for `t` in [0, `max`] meets; the leaves are visited along no particular
-    /// order, each object at most once.
+    /// order, an object split into several boxes (`optimize::early_split`) maybe more than once.
     pub fn any(&self, origin: Vector3<N>, direction: Vector3<N>, max: N, mut test: impl FnMut(usize) -> bool) -> bool {
         let mut found = false;
         self.visit(origin, direction, max, |index| {
@@ -210,38 +214,10 @@ impl<N: Number, I: Index> Bvh<'_, N, I> {
     /// Calls `visit` with each object of the leaves whose boxes the ray from `origin` along
     /// `direction` meets for `t` in [0, `max`], nearer boxes first, `visit` saying whether to go
     /// on, to stop, or to go on only as far as a `t` (a nearest hit found: farther boxes are
-    /// skipped). Each object at most once.
+    /// skipped). An object split into several boxes maybe more than once.
     pub fn walk(&self, origin: Vector3<N>, direction: Vector3<N>, max: N, mut visit: impl FnMut(usize) -> Walk<N>) {
-        let o = origin.to_array();
-        let d = direction.to_array();
-        // 1/d per axis; none where it cannot be formed (that axis then culls nothing).
-        let inverse = d.map(|component| if component == N::ZERO { None } else { N::ONE.checked_div(component).map(|inverse| (inverse, inverse < N::ZERO)) });
-        // Where the ray enters the node's box within [0, reach], if it does.
-        let entry = |node: &BvhNode<N>, reach: N| -> Option<N> {
-            let (mut near, mut far) = (N::ZERO, reach);
-            for axis in 0..3 {
-                let (low, high) = (node.low[axis], node.high[axis]);
-                match inverse[axis] {
-                    // Parallel to the slab: inside it or missing the box.
-                    None if d[axis] == N::ZERO && (o[axis] < low || o[axis] > high) => return None,
-                    None => {}
-                    Some((inverse, negative)) => {
-                        let (a, b) = ((low - o[axis]) * inverse, (high - o[axis]) * inverse);
-                        let (enter, exit) = if negative { (b, a) } else { (a, b) };
-                        if enter > near {
-                            near = enter;
-                        }
-                        if exit < far {
-                            far = exit;
-                        }
-                        if near > far {
-                            return None;
-                        }
-                    }
-                }
-            }
-            Some(near)
-        };
+        let slabs = Slabs::new(origin, direction);
+        let entry = |node: &BvhNode<N>, reach: N| slabs.entry(node, reach);
         let mut reach = max;
         // Each node on the stack with where the ray enters its box: popped, it is skipped
         // only if the reach has shrunk below that since (its box is not tested twice).
@@ -283,6 +259,61 @@ impl<N: Number, I: Index> Bvh<'_, N, I> {
     }
 }
 
+/// A ray prepared for the slab test of boxes: its origin, per axis 1/d and the side of the box
+/// it enters by.
+struct Slabs<N> {
+    origin: [N; 3],
+    inverse: [N; 3],
+    negative: [bool; 3],
+    /// Axes along which 1/d cannot be formed (fixed point only): the ray is parallel to them.
+    parallel: [bool; 3],
+}
+
+impl<N: Number> Slabs<N> {
+    fn new(origin: Vector3<N>, direction: Vector3<N>) -> Self {
+        // A float's 1/0 is taken as its largest value: the slab's two distances come out of the
+        // same arithmetic as any other axis's, huge and of one sign outside the slab (a miss),
+        // of both signs inside it.
+        let inverse = direction.to_array().map(|component| match N::ONE.checked_div(component) {
+            None if N::FLOATING_POINT && component == N::ZERO => Some(N::MAX),
+            inverse => inverse,
+        });
+        Self {
+            origin: origin.to_array(),
+            inverse: inverse.map(|inverse| inverse.unwrap_or(N::ZERO)),
+            negative: inverse.map(|inverse| inverse.is_some_and(|inverse| inverse < N::ZERO)),
+            parallel: inverse.map(|inverse| inverse.is_none()),
+        }
+    }
+
+    /// Where the ray enters the node's box within [0, `reach`], if it does.
+    #[inline(never)]
+    fn entry(&self, node: &BvhNode<N>, reach: N) -> Option<N> {
+        let (mut near, mut far) = (N::ZERO, reach);
+        for axis in 0..3 {
+            let (low, high, o) = (node.low[axis], node.high[axis], self.origin[axis]);
+            if !N::FLOATING_POINT && self.parallel[axis] {
+                if o < low || o > high {
+                    return None;
+                }
+                continue;
+            }
+            let (enter, exit) = if self.negative[axis] { (high, low) } else { (low, high) };
+            let (enter, exit) = ((enter - o) * self.inverse[axis], (exit - o) * self.inverse[axis]);
+            if enter > near {
+                near = enter;
+            }
+            if exit < far {
+                far = exit;
+            }
+            if near > far {
+                return None;
+            }
+        }
+        Some(near)
+    }
+}
+
 /// What a walk's visitor says after an object.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Walk<N> {
@@ -319,7 +350,7 @@ mod tests {
         }
         let mut nodes = std::vec![BvhNode::<N>::UNSET; boxes.len()];
         let mut order = std::vec![0u32; boxes.len()];
-        let used = build(&boxes, &mut nodes, &mut order);
+        let used = build(&boxes, |index| index, &mut nodes, &mut order);
         assert!(used > 1 && used <= boxes.len(), "{used}");
         let bvh = Bvh { nodes: &nodes[..used], order: &order };
         let mut visited_total = 0;
@@ -373,6 +404,6 @@ mod tests {
         let boxes = [([0.0; 3], [1.0; 3]); 8];
         let mut nodes = [BvhNode::<f32>::UNSET; 4];
         let mut order = [0u16; 8];
-        assert_eq!(build(&boxes, &mut nodes, &mut order), 0);
+        assert_eq!(build(&boxes, |index| index, &mut nodes, &mut order), 0);
     }
 }

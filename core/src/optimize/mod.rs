@@ -13,6 +13,8 @@ pub mod bounding_sphere;
 pub mod bounding_volume;
 #[cfg(feature = "acceleration-tables")]
 pub mod bvh;
+#[cfg(feature = "acceleration-tables")]
+pub mod early_split;
 pub mod capsule;
 pub mod extents;
 pub mod grid;

@@ -181,7 +181,8 @@ fn transmitted<N: Number, C: Config<Number = N>>(
         let mut blockers: heapless::Vec<usize, 64> = heapless::Vec::new();
         let mut overflow = false;
         hierarchy.visit(point, to_light, light_distance, |index| {
-            if index != shaded_object && candidate_meets(scene, &segment, culling.light_cones, (from_light, quantized), index, statistics) && blockers.push(index).is_err() {
+            // An object in several leaves (`early_split`) counts once.
+            if index != shaded_object && !blockers.contains(&index) && candidate_meets(scene, &segment, culling.light_cones, (from_light, quantized), index, statistics) && blockers.push(index).is_err() {
                 overflow = true;
             }
             overflow
