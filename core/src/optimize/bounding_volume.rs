@@ -285,6 +285,22 @@ impl ObjectGeometry {
             return (start, end, radius * (1.0 + 1e-9));
         }
         let (centre, radius) = self.bounding_sphere();
+        // A long thin triangle (NFF's polygons split into triangles across a face): its longest
+        // edge as the segment and the opposite corner's distance from it as the radius, where
+        // that capsule is thinner than the sphere, so its screen cover and depth bound follow
+        // the triangle. Grown by 2⁻¹⁶ of its largest coordinate for the tracer's rounding (the
+        // sphere's margin is in its radius; a thin capsule's is not).
+        if let Some(corners) = self.triangle() {
+            let length = |k: usize| distance(corners[k], corners[(k + 1) % 3]);
+            let longest = (0..3).fold(0, |best, k| if length(k) > length(best) { k } else { best });
+            let (start, end, apex) = (corners[longest], corners[(longest + 1) % 3], corners[(longest + 2) % 3]);
+            let largest = corners.iter().flatten().fold(0.0f64, |m, c| m.max(c.abs()));
+            let thin = segment_distance(apex, start, end) * (1.0 + 1e-9) + libm::ldexp(largest, -16);
+            let area = |length: f64, radius: f64| 2.0 * length * radius + core::f64::consts::PI * radius * radius;
+            if area(length(longest), thin) < area(0.0, radius) {
+                return (start, end, thin);
+            }
+        }
         (centre, centre, radius)
     }
 
@@ -365,6 +381,34 @@ fn distance(a: [f64; 3], b: [f64; 3]) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn triangle_geometry(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> ObjectGeometry {
+        let rows = [[b[0] - a[0], b[1] - a[1], b[2] - a[2], 0.0], [c[0] - a[0], c[1] - a[1], c[2] - a[2], 0.0], [0.0, 0.0, 1.0, 0.0], [a[0], a[1], a[2], 1.0]];
+        let world_from_object = Matrix4 { rows };
+        ObjectGeometry { primitive: Primitive::Triangle, world_from_object, object_from_world: world_from_object.affine_inverse().unwrap() }
+    }
+
+    /// A long thin triangle's capsule runs along its longest edge, far thinner than its
+    /// bounding sphere, and holds every point of it; a fat triangle keeps the sphere.
+    #[test]
+    fn a_thin_triangles_capsule_follows_its_longest_edge() {
+        let (a, b, c) = ([1.0, 2.0, 3.0], [41.0, 32.0, 3.0], [21.0, 17.2, 3.0]);
+        let geometry = triangle_geometry(a, b, c);
+        assert_eq!(geometry.triangle(), Some([a, b, c]));
+        let (start, end, radius) = geometry.bounding_capsule();
+        assert!((start, end) == (a, b) || (start, end) == (b, a), "{start:?} {end:?}");
+        assert!(radius < 1.0 && radius < geometry.bounding_sphere().1 / 20.0, "{radius}");
+        for i in 0..=20 {
+            for j in 0..=(20 - i) {
+                let (u, v) = (f64::from(i) / 20.0, f64::from(j) / 20.0);
+                let p = [0, 1, 2].map(|k| a[k] + u * (b[k] - a[k]) + v * (c[k] - a[k]));
+                assert!(segment_distance(p, start, end) <= radius, "{p:?}");
+            }
+        }
+        let fat = triangle_geometry([0.0; 3], [1.0, 0.0, 0.0], [0.5, 0.9, 0.0]);
+        let (start, end, _) = fat.bounding_capsule();
+        assert_eq!(start, end, "a point: the sphere");
+    }
 
     /// The table is the regular 16-gon around the unit circle, grown only by the margin: each
     /// vertex is libm's cos/sin times 1/cos(π/16)·(1 + 1e-9) to the last bits, and every edge's

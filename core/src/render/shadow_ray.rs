@@ -151,14 +151,18 @@ pub(crate) fn light_share<N: Number, C: Config<Number = N>>(
 ) -> N {
     #[cfg(feature = "ray-tree")]
     if scene.has_transparent_objects() {
-        return transmitted(scene, shaded_object, point, to_light, light_distance, statistics, culling);
+        return transmitted(scene, shaded_object, point, to_light, light_distance, statistics, last_blocker, culling);
     }
     if blocked(scene, shaded_object, point, to_light, light_distance, statistics, last_blocker, culling) { N::ZERO } else { N::ONE }
 }
 
 /// [`light_share`] with transparent objects: every candidate is tested (an opaque blocker
 /// ends the loop), in object order, so the product is the same whatever the optimizations.
+/// The opaque object that last blocked this light's ray is tried first, and through the
+/// hierarchy any opaque blocker ends the walk: a zero factor makes the product zero in any
+/// order.
 #[cfg(feature = "ray-tree")]
+#[allow(clippy::too_many_arguments)]
 fn transmitted<N: Number, C: Config<Number = N>>(
     scene: &Prepared<C>,
     shaded_object: usize,
@@ -166,6 +170,7 @@ fn transmitted<N: Number, C: Config<Number = N>>(
     to_light: Vector3<N>,
     light_distance: N,
     statistics: &mut Statistics,
+    last_blocker: &mut Option<C::Index>,
     culling: &ShadowCulling<'_, N, C::Index>,
 ) -> N {
     statistics.shadow_rays += 1;
@@ -178,15 +183,29 @@ fn transmitted<N: Number, C: Config<Number = N>>(
     // below (so the product rounds the same); more than the list holds, the loop below.
     #[cfg(feature = "acceleration-tables")]
     if let Some(hierarchy) = scene.acceleration.hierarchy().filter(|_| culls) {
+        let meets = |index: usize, statistics: &mut Statistics| candidate_meets(scene, &segment, culling.light_cones, (from_light, quantized), index, statistics);
+        if let Some(index) = last_blocker.map(Index::get).filter(|index| *index != shaded_object) {
+            if meets(index, statistics) {
+                return N::ZERO;
+            }
+        }
         let mut blockers: heapless::Vec<usize, 64> = heapless::Vec::new();
-        let mut overflow = false;
+        let (mut overflow, mut opaque) = (false, false);
         hierarchy.visit(point, to_light, light_distance, |index| {
             // An object in several leaves (`early_split`) counts once.
-            if index != shaded_object && !blockers.contains(&index) && candidate_meets(scene, &segment, culling.light_cones, (from_light, quantized), index, statistics) && blockers.push(index).is_err() {
-                overflow = true;
+            if index != shaded_object && !blockers.contains(&index) && meets(index, statistics) {
+                if scene.transmit(index) == N::ZERO {
+                    *last_blocker = Some(C::Index::new(index));
+                    opaque = true;
+                } else if blockers.push(index).is_err() {
+                    overflow = true;
+                }
             }
-            overflow
+            overflow || opaque
         });
+        if opaque {
+            return N::ZERO;
+        }
         if !overflow {
             blockers.sort_unstable();
             let mut share = N::ONE;
