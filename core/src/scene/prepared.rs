@@ -372,7 +372,9 @@ fn prepare_object<N: Number>(object: &ObjectDescription, origins: &RayOrigins) -
             kd: N::from_f64(material.kd),
             ks: N::from_f64(material.ks),
             rnd: N::from_f64(material.rnd),
-            power: libm::round(material.pwr.clamp(0.0, 1.0e6)) as u32,
+            // No highlight (NFF's Ks 0): the exponent is never seen, so none is raised (the
+            // SPD's tree asks 100,000 of every surface, a square per bit per light).
+            power: if material.ks == 0.0 { 0 } else { libm::round(material.pwr.clamp(0.0, 1.0e6)) as u32 },
             reflectance: material.cmy.map(|c| N::from_f64((1.0 - c).clamp(0.0, 1.0))),
         },
     })
