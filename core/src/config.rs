@@ -51,6 +51,10 @@ pub trait Config: 'static {
     /// The shadow rays' hierarchy of boxes (`optimize::bvh`): its nodes, and the objects its
     /// leaves hold, one `T` per object each (kept when [`Config::HIERARCHY`]).
     type Hierarchy<T: Copy>: Table<T>;
+    /// The screen grid's cells (and one more): [`GRID_SIZE`](crate::optimize::grid::GRID_SIZE)
+    /// squared on an array, up to [`MAX_GRID_SIZE`](crate::optimize::grid::MAX_GRID_SIZE)
+    /// squared sized at run time (the grid's side then grows with the objects).
+    type ScreenCells<T: Copy>: Table<T>;
     /// The ray tree's stack of nodes: at most [`Config::TREE_DEPTH`].
     type TreeStack<T: Clone>: List<T>;
     /// One row of antialiasing corners: its length is how many the render keeps (the
@@ -191,6 +195,7 @@ where
     type SpaceEntries = [[u16; SPACE_ENTRIES_PER_OBJECT]; K];
     type BlockerLists = [u16; 0];
     type Hierarchy<T: Copy> = [T; 0];
+    type ScreenCells<T: Copy> = [T; crate::optimize::grid::CELLS + 1];
     type TreeStack<T: Clone> = heapless::Vec<T, DEPTH>;
     type CornerRow = [[u8; 3]; ROW];
     const MAX_OBJECTS: usize = K;

@@ -105,6 +105,7 @@ impl<N: Number> Config for Heap<N> {
     type SpaceEntries = Boxed<u32>;
     type BlockerLists = Boxed<u32>;
     type Hierarchy<T: Copy> = Boxed<T>;
+    type ScreenCells<T: Copy> = Boxed<T>;
     type TreeStack<T: Clone> = heapless::Vec<T, DEFAULT_TREE_DEPTH>;
     type CornerRow = Boxed<[u8; 3]>;
     const MAX_OBJECTS: usize = usize::MAX;

@@ -42,6 +42,9 @@ fn the_spd_scenes_render_with_every_optimization_as_with_none() {
         let many = description.objects.len() > 128;
         let prepared = HostPrepared::<f32>::prepare(&description).unwrap();
         assert_eq!(prepared.acceleration.hierarchy().is_some(), many, "{name}: a hierarchy exactly for more than 128 objects");
+        // The adaptive screen grid: √(objects/2) cells across, from the thesis's 20 to 64.
+        let side = (20..=64).rev().find(|side: &usize| 2 * side * side <= description.objects.len()).unwrap_or(20);
+        assert_eq!(prepared.acceleration.grid_side(), Some(side as u16), "{name}");
         let statistics = same_with_every_optimization(name, *description, 24);
         assert!(statistics.shadow_rays > 0, "{name}");
     }

@@ -329,6 +329,11 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
         self.grid.rebuild(&screen, order, extents, polygon, stadium, cells, depth);
     }
 
+    /// Grid: its cells across and down, `None` without a grid.
+    pub fn grid_side(&self) -> Option<u16> {
+        self.grid.side()
+    }
+
     /// Grid: the entries of the pixel's cell and the pixel's offsets in it; `None` without a grid.
     #[inline]
     pub fn grid_cell(&self, pixel: PixelPosition) -> Option<grid::CellAt<'_, C>> {

@@ -2,7 +2,13 @@
 //! cover it, in test order (so with Sortlist each cell list stays sorted).
 //!
 //! No heap: the cell lists share one pool of `Config::GRID_ENTRIES_PER_OBJECT` entries an object
-//! (an object's number and two `u16`s), with 401 start offsets (`Config::Index`s). The cell size is the thesis's `(pixels − 1)/20 + 1`.
+//! (an object's number and two `u16`s), with a start offset per cell and one more
+//! (`Config::ScreenCells`). The cell size is the thesis's `(pixels − 1)/20 + 1`.
+//!
+//! The adaptive grid the thesis proposes (§5.2.1): where the storage is sized at run time, a
+//! scene of many objects gets more cells, √(objects/2) across up to [`MAX_GRID_SIZE`] (a scene
+//! of thousands of triangles fills a 20x20 cell's list with objects that miss most of its
+//! pixels). Should the pool overflow with more cells, the thesis's 20 are tried.
 //! A cell list simply ends at the next cell's start (the thesis's NULL-dereferencing
 //! `nextobject`, digest B4, cannot happen). Should a scene need more entries than the pool
 //! holds, the grid is switched off for that scene (every object is a candidate), which changes
@@ -28,8 +34,12 @@ use super::sortlist::{heapsort, INSERTION_SORT_BELOW};
 
 /// Cells across and down (`GRIDCOL`, `GRIDROW`).
 pub const GRID_SIZE: u16 = 20;
+/// The most cells across and down of a grid whose storage is sized at run time.
+pub const MAX_GRID_SIZE: u16 = 64;
 /// No cells at all without the `acceleration-tables` feature (the grid is then inactive).
-const CELLS: usize = if super::build_options::TABLES { GRID_SIZE as usize * GRID_SIZE as usize } else { 0 };
+pub const CELLS: usize = if super::build_options::TABLES { GRID_SIZE as usize * GRID_SIZE as usize } else { 0 };
+/// [`MAX_GRID_SIZE`]'s cells.
+const MAX_CELLS: usize = if super::build_options::TABLES { MAX_GRID_SIZE as usize * MAX_GRID_SIZE as usize } else { 0 };
 /// What an entry knows of its object within the cell.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum CellShape {
@@ -71,7 +81,9 @@ pub struct Grid<C: Config> {
     /// The cells' size; `None` when the grid is off or its pool overflowed (and, all bytes
     /// zero, before it is built).
     cells: Option<CellSize>,
-    starts: [C::Index; CELLS + 1],
+    /// Cells across and down.
+    side: u16,
+    starts: C::ScreenCells<C::Index>,
     pool: C::GridPool<Entry<C::Index>>,
     /// With Sortlist: each entry's lower bound of `t` for the part of its object seen through
     /// the entry's rectangle (cell lists are sorted by it).
@@ -86,7 +98,7 @@ impl<C: Config> core::fmt::Debug for Grid<C> {
 
 impl<C: Config> Clone for Grid<C> {
     fn clone(&self) -> Self {
-        Self { cells: self.cells, starts: self.starts, pool: self.pool.clone(), depth: self.depth.clone() }
+        Self { cells: self.cells, side: self.side, starts: self.starts.clone(), pool: self.pool.clone(), depth: self.depth.clone() }
     }
 }
 
@@ -99,6 +111,7 @@ where
     /// costs zero-initialised RAM and no flash).
     pub const UNSET: Self = Self {
         cells: None,
+        side: GRID_SIZE,
         starts: [0; CELLS + 1],
         pool: [[Entry { object: 0, columns: 0, rows: 0 }; POOL]; K],
         depth: [[N::ZEROED; POOL]; K],
@@ -109,7 +122,7 @@ impl<N: Number, C: Config<Number = N>> Grid<C> {
     /// An inactive grid whose pool holds [`Config::grid_entries`] for `objects` objects.
     pub fn inactive(objects: usize) -> Self {
         let entries = C::grid_entries(objects);
-        Self { cells: None, starts: [C::Index::default(); CELLS + 1], pool: C::GridPool::filled(entries, Entry::default()), depth: C::GridPool::filled(entries, -N::MAX) }
+        Self { cells: None, side: GRID_SIZE, starts: C::ScreenCells::filled(MAX_CELLS + 1, C::Index::default()), pool: C::GridPool::filled(entries, Entry::default()), depth: C::GridPool::filled(entries, -N::MAX) }
     }
 
     /// The entries the pool holds.
@@ -148,13 +161,40 @@ impl<N: Number, C: Config<Number = N>> Grid<C> {
         // The pool and the bounds are not cleared: the pass below writes every entry a cell
         // list reaches (clearing them cost the lattice 7 k instructions a frame on the Cortex-M4F).
         self.cells = None;
-        self.starts.fill(C::Index::default());
+        self.starts.slots_mut().fill(C::Index::default());
         if C::GRID_ENTRIES_PER_OBJECT == 0 {
             return;
         }
+        // As many cells across as the storage holds up to √(objects/2), at least the thesis's.
+        // (Integers: no f64 on the firmware, whose array holds 20 across.)
+        let room = self.starts.slots().len().saturating_sub(1);
+        let squared = |side: u16| usize::from(side) * usize::from(side);
+        let wanted = (GRID_SIZE..=MAX_GRID_SIZE).rev().find(|side| squared(*side) <= room && 2 * squared(*side) <= order.len()).unwrap_or(GRID_SIZE);
+        if !self.fill(wanted, screen, order, extents, &polygon, &stadium, cells, depth) && (wanted == GRID_SIZE || !self.fill(GRID_SIZE, screen, order, extents, &polygon, &stadium, cells, depth)) {
+            self.clear();
+        }
+    }
+
+    /// [`Grid::rebuild`] with `side` cells across and down: false when the pool overflows.
+    #[allow(clippy::too_many_arguments)]
+    fn fill(
+        &mut self,
+        side: u16,
+        screen: &Screen,
+        order: &[C::Index],
+        extents: &[Extent],
+        polygon: &impl Fn(usize) -> Projected,
+        stadium: &impl Fn(usize) -> Option<Stadium>,
+        cells: CellShape,
+        depth: Option<&BlockDepth<'_, N>>,
+    ) -> bool {
+        if usize::from(side) * usize::from(side) + 1 > self.starts.slots().len() {
+            return false;
+        }
+        self.side = side;
         let grid = self;
         // At least 1, so the divisions below cannot be by zero.
-        let (cell_width, cell_height) = (screen.width.saturating_sub(1) / GRID_SIZE + 1, screen.height.saturating_sub(1) / GRID_SIZE + 1);
+        let (cell_width, cell_height) = (screen.width.saturating_sub(1) / side + 1, screen.height.saturating_sub(1) / side + 1);
         let (cell_width, cell_height) = (NonZeroU16::new(cell_width).unwrap_or(NonZeroU16::MIN), NonZeroU16::new(cell_height).unwrap_or(NonZeroU16::MIN));
         // Calls `add(cell, entry)` for every cell the object may cover.
         let visit = |object: usize, add: &mut dyn FnMut(usize, Entry<C::Index>)| {
@@ -165,13 +205,13 @@ impl<N: Number, C: Config<Number = N>> Grid<C> {
             let shape = if cells == CellShape::Polygons && super::build_options::SILHOUETTES { polygon(object) } else { Projected::Whole };
             let stadium = if cells == CellShape::Octagons { stadium(object) } else { None };
             let (width, height) = (cell_width.get(), cell_height.get());
-            for cell_row in extent.first_row / cell_height..=(extent.last_row / cell_height).min(GRID_SIZE - 1) {
+            for cell_row in extent.first_row / cell_height..=(extent.last_row / cell_height).min(side - 1) {
                 let y0 = cell_row * height;
                 let rows = (y0.max(extent.first_row), (y0 + (height - 1)).min(extent.last_row));
-                for cell_column in extent.first_column / cell_width..=(extent.last_column / cell_width).min(GRID_SIZE - 1) {
+                for cell_column in extent.first_column / cell_width..=(extent.last_column / cell_width).min(side - 1) {
                     let x0 = cell_column * width;
                     let columns = (x0.max(extent.first_column), (x0 + (width - 1)).min(extent.last_column));
-                    let cell = usize::from(cell_row) * GRID_SIZE as usize + usize::from(cell_column);
+                    let cell = usize::from(cell_row) * usize::from(side) + usize::from(cell_column);
                     let pack = |first: u16, last: u16, origin: u16| (first - origin).min(255) | ((last - origin).min(255) << 8);
                     if cells == CellShape::Octagons {
                         // The octagon's rows within the cell's columns, and its columns there.
@@ -229,7 +269,9 @@ impl<N: Number, C: Config<Number = N>> Grid<C> {
         let mut places = C::GridPool::<C::Index>::filled(capacity, C::Index::default());
         let places = places.slots_mut();
         // Entries per cell, then each cell's next free place.
-        let mut next = [C::Index::default(); CELLS];
+        let cells_used = usize::from(side) * usize::from(side);
+        let mut next = C::ScreenCells::<C::Index>::filled(cells_used, C::Index::default());
+        let next = next.slots_mut().get_mut(..cells_used).unwrap_or(&mut []);
         let mut used = 0usize;
         let mut overflowed = false;
         for &object in order {
@@ -251,7 +293,7 @@ impl<N: Number, C: Config<Number = N>> Grid<C> {
                         let corner = index * size;
                         (corner + (packed & 0xFF), corner + (packed >> 8))
                     };
-                    let (cell_row, cell_column) = ((cell / GRID_SIZE as usize) as u16, (cell % GRID_SIZE as usize) as u16);
+                    let (cell_row, cell_column) = ((cell / usize::from(side)) as u16, (cell % usize::from(side)) as u16);
                     let columns = origin(entry.columns, cell_width.get(), cell_column);
                     let rows = origin(entry.rows, cell_height.get(), cell_row);
                     *bound = depth(object, columns, rows);
@@ -260,16 +302,16 @@ impl<N: Number, C: Config<Number = N>> Grid<C> {
             });
         }
         if overflowed || used > capacity {
-            grid.clear();
-            return;
+            return false;
         }
         let mut total = 0;
-        for (start, count) in grid.starts.iter_mut().zip(next.iter_mut()) {
+        let starts = grid.starts.slots_mut().get_mut(..=cells_used).unwrap_or(&mut []);
+        for (start, count) in starts.iter_mut().zip(next.iter_mut()) {
             *start = C::Index::new(total);
             total += count.get();
             *count = *start;
         }
-        if let Some(end) = grid.starts.last_mut() {
+        if let Some(end) = starts.last_mut() {
             *end = C::Index::new(total);
         }
         // Each entry's place: its cell's next (stable: entries of a cell keep test order).
@@ -293,7 +335,7 @@ impl<N: Number, C: Config<Number = N>> Grid<C> {
         }
         // Sort each cell by its entries' bounds, ties in test order (the order they are in).
         if depth.is_some() {
-            for span in grid.starts.windows(2) {
+            for span in starts.windows(2) {
                 let &[start, end] = span else { continue };
                 let range = start.get()..end.get();
                 let (Some(bounds), Some(pool), Some(places)) = (bounds.get_mut(range.clone()), pool.get_mut(range.clone()), places.get_mut(range)) else { continue };
@@ -305,12 +347,13 @@ impl<N: Number, C: Config<Number = N>> Grid<C> {
             }
         }
         grid.cells = Some(CellSize { width: cell_width, height: cell_height });
+        true
     }
 
     /// Back to [`Grid::inactive`], in place.
     pub fn clear(&mut self) {
         self.cells = None;
-        self.starts.fill(C::Index::default());
+        self.starts.slots_mut().fill(C::Index::default());
         self.pool.slots_mut().fill(Entry::default());
         self.depth.slots_mut().fill(-N::MAX);
     }
@@ -320,14 +363,20 @@ impl<N: Number, C: Config<Number = N>> Grid<C> {
         self.cells.is_some()
     }
 
+    /// Cells across and down when the grid is in use.
+    pub fn side(&self) -> Option<u16> {
+        self.is_active().then_some(self.side)
+    }
+
     /// The entries of the cell holding image pixel (column, row), and the pixel's offsets
     /// from the cell's corner (saturated at 255); `None` when the grid is not active.
     #[inline]
     pub fn cell(&self, column: u16, row: u16) -> Option<CellAt<'_, C>> {
         let CellSize { width, height } = self.cells?;
-        let (cell_column, cell_row) = ((column / width).min(GRID_SIZE - 1), (row / height).min(GRID_SIZE - 1));
-        let cell = usize::from(cell_row) * GRID_SIZE as usize + usize::from(cell_column);
-        let (Some(start), Some(end)) = (self.starts.get(cell), self.starts.get(cell + 1)) else { return Some((&[], &[], 0, 0)) };
+        let (cell_column, cell_row) = ((column / width).min(self.side - 1), (row / height).min(self.side - 1));
+        let cell = usize::from(cell_row) * usize::from(self.side) + usize::from(cell_column);
+        let starts = self.starts.slots();
+        let (Some(start), Some(end)) = (starts.get(cell), starts.get(cell + 1)) else { return Some((&[], &[], 0, 0)) };
         let (start, end) = (start.get(), end.get());
         let dx = (column - cell_column * width.get()).min(255);
         let dy = (row - cell_row * height.get()).min(255);
@@ -336,7 +385,7 @@ impl<N: Number, C: Config<Number = N>> Grid<C> {
 
     /// Total entries over all cells.
     pub fn entries(&self) -> usize {
-        self.starts.get(CELLS).map_or(0, |entries| entries.get())
+        self.starts.slots().get(usize::from(self.side) * usize::from(self.side)).map_or(0, |entries| entries.get())
     }
 }
 
