@@ -63,14 +63,15 @@ fn main() {
 
     let text = std::fs::read(&scene_path)
         .unwrap_or_else(|error| fail(&format!("cannot read the scene {}: {error}", scene_path.display())));
+    println!("cargo:rustc-check-cfg=cfg(microtrace_sizing)");
     let parsed: Result<microtrace::model::SceneDescription<PARSE_CAPACITY>, _> = microtrace::parser::parse_file(&scene_path.to_string_lossy(), &text);
-    let mut description = parsed.unwrap_or_else(|error| match error.kind {
-        microtrace::model::SceneErrorKind::TooManyObjects { .. } => fail(&format!(
-            "{} objects at build time (PARSE_CAPACITY in firmware/build.rs); no board this firmware runs on has the RAM for so many",
-            in_file(&scene_path, &error)
-        )),
-        _ => fail(&in_file(&scene_path, &error)),
-    });
+    let mut description = match parsed {
+        Ok(description) => description,
+        Err(error) if matches!(error.kind, microtrace::model::SceneErrorKind::TooManyObjects { .. }) => {
+            return size_only(&scene_path, &text, (width, height), (number, &number_name), board, &memory, &out_dir);
+        }
+        Err(error) => fail(&in_file(&scene_path, &error)),
+    };
     description.fit_to_size(width, height);
     if let Some(optimizations) = optimization_override(env("MICROTRACE_OPT").as_deref()) {
         description.optimizations = optimizations;
@@ -79,16 +80,7 @@ fn main() {
 
     let mut source = generate(&description, &scene_path, number, &number_name, board);
     memory.write(&mut source);
-    let reserve = match env("MICROTRACE_STACK_RESERVE") {
-        None => "None".to_owned(),
-        Some(text) => match text.parse::<u32>() {
-            Ok(bytes) => format!("Some({bytes})"),
-            Err(_) => fail("MICROTRACE_STACK_RESERVE: expected a number of bytes, e.g. 12288"),
-        },
-    };
-    writeln!(source, "/// The stack the RAM check keeps free when `MICROTRACE_STACK_RESERVE` says (src/ram.rs; `None`: the").unwrap();
-    writeln!(source, "/// default, which grows with the objects).").unwrap();
-    writeln!(source, "pub const STACK_RESERVE_BYTES: Option<usize> = {reserve};").unwrap();
+    write_stack_reserve(&mut source);
     // The scene prepared ahead in the number type: what the chip starts from (no f64 there).
     let vsqrt = number.contains("VsqrtF32");
     let written = match NumberKind::from_name(&number_name) {
@@ -103,6 +95,76 @@ fn main() {
         });
     }
     std::fs::write(out_dir.join("scene.rs"), source).unwrap();
+}
+
+/// The stack the RAM check keeps (`MICROTRACE_STACK_RESERVE`).
+fn write_stack_reserve(source: &mut String) {
+    let reserve = match env("MICROTRACE_STACK_RESERVE") {
+        None => "None".to_owned(),
+        Some(text) => match text.parse::<u32>() {
+            Ok(bytes) => format!("Some({bytes})"),
+            Err(_) => fail("MICROTRACE_STACK_RESERVE: expected a number of bytes, e.g. 12288"),
+        },
+    };
+    writeln!(source, "/// The stack the RAM check keeps free when `MICROTRACE_STACK_RESERVE` says (src/ram.rs; `None`: the").unwrap();
+    writeln!(source, "/// default, which grows with the objects).").unwrap();
+    writeln!(source, "pub const STACK_RESERVE_BYTES: Option<usize> = {reserve};").unwrap();
+}
+
+/// A scene of more objects than the build prepares ahead ([`PARSE_CAPACITY`]; Haines' SPD
+/// scenes have thousands): only its counts are written, which size the chip's tables, and the
+/// build is compiled with `cfg(microtrace_sizing)`, where firmware/src/ram.rs stops it with the
+/// RAM the scene would need on the board (the same check, in the target's own layout), so a
+/// report can say what such a scene needs. It never links.
+fn size_only(scene_path: &Path, text: &[u8], (width, height): (u16, u16), (number, number_name): (&str, &str), board: Board, memory: &Memory, out_dir: &Path) {
+    let parsed: Result<microtrace::model::Description<Objects>, _> = microtrace::parser::parse_file(&scene_path.to_string_lossy(), text);
+    let mut description = parsed.unwrap_or_else(|error| fail(&in_file(scene_path, &error)));
+    description.fit_to_size(width, height);
+    let mut source = generate(&description, scene_path, number, number_name, board);
+    memory.write(&mut source);
+    write_stack_reserve(&mut source);
+    writeln!(source, "/// Sizing only: no object is prepared ahead.").unwrap();
+    writeln!(source, "pub static OBJECTS_AHEAD: [microtrace::model::Object<Number>; 0] = [];").unwrap();
+    writeln!(source, "pub static SOLID_NODES_AHEAD: [microtrace::model::PreparedSolidNode<Number>; 0] = [];").unwrap();
+    writeln!(source, "pub static PALETTE_AHEAD: microtrace::model::Palette = microtrace::model::Palette {{ entries: [microtrace::model::Rgb4 {{ r: 0, g: 0, b: 0 }}; 256] }};").unwrap();
+    writeln!(source, "/// The objects the build prepares ahead at most (firmware/build.rs).\npub const PREPARED_AHEAD_AT_MOST: usize = {PARSE_CAPACITY};").unwrap();
+    println!("cargo:rustc-cfg=microtrace_sizing");
+    std::fs::write(out_dir.join("scene.rs"), source).unwrap();
+}
+
+/// A scene's objects in a growing list, for [`size_only`].
+#[derive(Clone, Default)]
+struct Objects(Vec<microtrace::model::ObjectDescription>);
+
+impl std::ops::Deref for Objects {
+    type Target = [microtrace::model::ObjectDescription];
+
+    fn deref(&self) -> &Self::Target {
+        &self.0
+    }
+}
+
+impl std::ops::DerefMut for Objects {
+    fn deref_mut(&mut self) -> &mut Self::Target {
+        &mut self.0
+    }
+}
+
+impl microtrace::storage::List<microtrace::model::ObjectDescription> for Objects {
+    const CAPACITY: usize = usize::MAX;
+
+    fn push(&mut self, item: microtrace::model::ObjectDescription) -> Result<(), microtrace::model::ObjectDescription> {
+        self.0.push(item);
+        Ok(())
+    }
+
+    fn pop(&mut self) -> Option<microtrace::model::ObjectDescription> {
+        self.0.pop()
+    }
+
+    fn clear(&mut self) {
+        self.0.clear();
+    }
 }
 
 fn env(name: &str) -> Option<String> {
@@ -377,8 +439,8 @@ fn check_primitives<const N: usize>(description: &SceneDescription<N>, scene_pat
 }
 
 
-fn generate<const N: usize>(
-    description: &SceneDescription<N>,
+fn generate<L: std::ops::Deref<Target = [microtrace::model::ObjectDescription]>>(
+    description: &microtrace::model::Description<L>,
     scene_path: &Path,
     number: &str,
     number_name: &str,

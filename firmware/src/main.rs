@@ -188,7 +188,15 @@ fn write_report(scene: &PreparedScene, statistics: &Passes, stack_peak_bytes: u3
     }
 }
 
+/// A sizing build (`cfg(microtrace_sizing)`, build.rs's `size_only`) has no scene prepared
+/// ahead: firmware/src/ram.rs stops its compilation with the RAM the scene would need.
+#[cfg(microtrace_sizing)]
+fn prepare(_scene: &'static mut PreparedScene) -> &'static PreparedScene {
+    fail("a sizing build does not render")
+}
+
 /// Out of line: preparing's temporaries are off the stack before the render's are on it.
+#[cfg(not(microtrace_sizing))]
 #[inline(never)]
 fn prepare(scene: &'static mut PreparedScene) -> &'static PreparedScene {
     // From the scene prepared ahead at build time in the number type (build.rs): only the

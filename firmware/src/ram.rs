@@ -72,6 +72,26 @@ const _: () = {
     }
 };
 
+/// A sizing build (build.rs's `size_only`: more objects than it prepares ahead) that fits the
+/// RAM stops here, saying so; one that does not stopped above with what it needs.
+#[cfg(microtrace_sizing)]
+const _: () = {
+    if NEEDED_BYTES <= scene::RAM_BYTES as usize {
+        panic!("{}", FITS_BUT_NOT_PREPARED.as_str());
+    }
+};
+
+#[cfg(microtrace_sizing)]
+const FITS_BUT_NOT_PREPARED: Text = Text::new()
+    .text(scene::SCENE_PATH)
+    .text(": ")
+    .number(scene::OBJECT_COUNT)
+    .text(" objects fit the RAM (")
+    .number(NEEDED_BYTES)
+    .text(" bytes) but the build prepares at most ")
+    .number(scene::PREPARED_AHEAD_AT_MOST)
+    .text(" ahead (PARSE_CAPACITY in firmware/build.rs)");
+
 /// The message, written at compile time (a `const` panic takes a `&str`, not a format).
 const TOO_LARGE: Text = Text::new()
     .text(scene::SCENE_PATH)

@@ -329,7 +329,7 @@ fn check_options(options: &FirmwareOptions) -> Result<(), String> {
 /// solids' operands'), `csg` when it has solids, `ray-tree` when its
 /// objects reflect or transmit and `antialias` when it antialiases (the firmware models only those), parsing it with the same parser as the firmware's build script.
 fn primitive_features(scene: &Path) -> Result<Vec<&'static str>, String> {
-    let description = parse_scene(scene)?;
+    let description = parse_any_size(scene)?;
     let mut features: Vec<&'static str> = Primitive::ALL
         .into_iter()
         .filter(|primitive| description.primitives().any(|(used, _)| used.index() == primitive.index()))
@@ -350,20 +350,61 @@ fn primitive_features(scene: &Path) -> Result<Vec<&'static str>, String> {
     Ok(features)
 }
 
+/// The scene parsed whatever its size (its features, for a build that only sizes a scene of
+/// more objects than the build prepares ahead: firmware/build.rs's `size_only`).
+fn parse_any_size(scene: &Path) -> Result<microtrace::model::Description<Growing>, String> {
+    let text = std::fs::read(scene).map_err(|error| format!("scene {}: {error}", scene.display()))?;
+    microtrace::parser::parse_file(&scene.to_string_lossy(), &text).map_err(|error| {
+        if error.line == 0 { format!("{}: {error}", scene.display()) } else { format!("{}:{error}", scene.display()) }
+    })
+}
+
+/// The objects of the scene as traced (an NFF polygon counts its triangles), whatever its size.
+pub fn scene_objects(scene: &Path) -> Result<usize, String> {
+    parse_any_size(scene).map(|description| description.objects.len())
+}
+
+/// A list of objects as long as the scene's.
+#[derive(Clone, Default)]
+pub struct Growing(Vec<microtrace::model::ObjectDescription>);
+
+impl std::ops::Deref for Growing {
+    type Target = [microtrace::model::ObjectDescription];
+
+    fn deref(&self) -> &Self::Target {
+        &self.0
+    }
+}
+
+impl std::ops::DerefMut for Growing {
+    fn deref_mut(&mut self) -> &mut Self::Target {
+        &mut self.0
+    }
+}
+
+impl microtrace::storage::List<microtrace::model::ObjectDescription> for Growing {
+    const CAPACITY: usize = usize::MAX;
+
+    fn push(&mut self, item: microtrace::model::ObjectDescription) -> Result<(), microtrace::model::ObjectDescription> {
+        self.0.push(item);
+        Ok(())
+    }
+
+    fn pop(&mut self) -> Option<microtrace::model::ObjectDescription> {
+        self.0.pop()
+    }
+
+    fn clear(&mut self) {
+        self.0.clear();
+    }
+}
+
 /// The scene parsed with the same parser and capacity as the firmware's build script, its
 /// errors in the one format of scene errors (docs/bad-input.md): `FILE:line N: reason`.
 fn parse_scene(scene: &Path) -> Result<Box<SceneDescription<FIRMWARE_SCENE_CAPACITY>>, String> {
     let text = std::fs::read(scene).map_err(|error| format!("scene {}: {error}", scene.display()))?;
     let parsed: Result<SceneDescription<FIRMWARE_SCENE_CAPACITY>, _> = microtrace::parser::parse_file(&scene.to_string_lossy(), &text);
-    let description = parsed.map_err(|error| {
-        let message = if error.line == 0 { format!("{}: {error}", scene.display()) } else { format!("{}:{error}", scene.display()) };
-        match error.kind {
-            microtrace::model::SceneErrorKind::TooManyObjects { .. } => format!(
-                "{message} objects at build time (PARSE_CAPACITY in firmware/build.rs); no board this firmware runs on has the RAM for so many"
-            ),
-            _ => message,
-        }
-    })?;
+    let description = parsed.map_err(|error| if error.line == 0 { format!("{}: {error}", scene.display()) } else { format!("{}:{error}", scene.display()) })?;
     Ok(Box::new(description))
 }
 

@@ -4,7 +4,8 @@
 //! - [`example::build`]: build a real-board example (`cargo xtask firmware-example`), and
 //!   [`example::check_image`], what the tests check in its ELF;
 //! - [`report::run`]: every thesis scene, number type and board, into README.md's table and
-//!   `docs/firmware-report.json` (`cargo xtask firmware-report`).
+//!   `docs/firmware-report.json` (`cargo xtask firmware-report`); [`spd_report::run`], Haines'
+//!   SPD scenes on the Cortex-M4F into `docs/spd-firmware.md` (`--spd`).
 
 pub mod budget;
 pub mod elf;
@@ -17,6 +18,7 @@ pub mod pico;
 pub mod qemu;
 pub mod report;
 pub mod setup;
+pub mod spd_report;
 pub mod uf2;
 
 use std::path::{Path, PathBuf};

@@ -30,13 +30,19 @@ fn usage() -> &'static str {
       Runs both thesis scenes at 128x64 in every number type on both boards (and all-primitives
       builds), writes the table into README.md and docs/firmware-report.json (several minutes).
       With any of the options, runs only what they keep and writes the partial report to
-      firmware/target/report/partial/ (README.md and docs/ are left alone)."
+      firmware/target/report/partial/ (README.md and docs/ are left alone).
+  cargo xtask firmware-report --spd
+      Haines' SPD scenes at 128x64 on the mps2-an386 in f32: the small ones rendered, and the RAM
+      each scene the board cannot hold would need; writes docs/spd-firmware.md."
 }
 
 fn main() {
     let arguments: Vec<String> = std::env::args().skip(1).collect();
     let result = match arguments.first().map(String::as_str) {
         Some("firmware") => firmware_task(&arguments[1..]),
+        Some("firmware-report") if arguments.get(1).map(String::as_str) == Some("--spd") && arguments.len() == 2 => {
+            xtask::spd_report::run().map(|rows| println!("{} scenes", rows.len()))
+        }
         Some("firmware-report") => {
             report_filter(&arguments[1..]).and_then(|filter| xtask::report::run(&filter)).map(|runs| println!("{} runs", runs.len()))
         }

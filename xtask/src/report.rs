@@ -89,7 +89,7 @@ pub struct ReportMiss {
 }
 
 /// The RAM check's reason when `error` is a build that failed it.
-fn does_not_fit(error: &str) -> Option<String> {
+pub fn does_not_fit(error: &str) -> Option<String> {
     let line = error.lines().find(|line| line.contains(" bytes of RAM (") && line.contains("needs "))?;
     let from = line.find("needs ")?;
     let reason = &line[from..];
@@ -717,7 +717,7 @@ pub fn replace_between_markers(readme: &str, table: &str) -> Result<String, Stri
 }
 
 /// 1234567 -> "1,234,567".
-fn thousands(value: u64) -> String {
+pub fn thousands(value: u64) -> String {
     let digits = value.to_string();
     let mut out = String::new();
     for (index, digit) in digits.chars().enumerate() {

@@ -103,8 +103,8 @@ fn cut(piece: &Piece, threshold: f64, depth: usize, emit: &mut impl FnMut(WorldB
 fn clip(piece: &Piece, axis: usize, at: f64, keep_below: bool) -> Piece {
     let inside = |p: &[f64; 3]| if keep_below { p[axis] <= at } else { p[axis] >= at };
     let mut out = Piece::new();
-    for (k, current) in piece.iter().enumerate() {
-        let previous = piece[(k + piece.len() - 1) % piece.len()];
+    let Some(mut previous) = piece.last().copied() else { return out };
+    for current in piece {
         if inside(current) != inside(&previous) {
             let s = (at - previous[axis]) / (current[axis] - previous[axis]);
             let mut crossing = [0, 1, 2].map(|c| previous[c] + s * (current[c] - previous[c]));
@@ -115,6 +115,7 @@ fn clip(piece: &Piece, axis: usize, at: f64, keep_below: bool) -> Piece {
         if inside(current) {
             let _ = out.push(*current);
         }
+        previous = *current;
     }
     out
 }

@@ -81,7 +81,7 @@ pub struct Grid<C: Config> {
     /// The cells' size; `None` when the grid is off or its pool overflowed (and, all bytes
     /// zero, before it is built).
     cells: Option<CellSize>,
-    /// Cells across and down.
+    /// Cells across and down (0 until built: every byte of an unset grid is zero).
     side: u16,
     starts: C::ScreenCells<C::Index>,
     pool: C::GridPool<Entry<C::Index>>,
@@ -111,7 +111,7 @@ where
     /// costs zero-initialised RAM and no flash).
     pub const UNSET: Self = Self {
         cells: None,
-        side: GRID_SIZE,
+        side: 0,
         starts: [0; CELLS + 1],
         pool: [[Entry { object: 0, columns: 0, rows: 0 }; POOL]; K],
         depth: [[N::ZEROED; POOL]; K],
@@ -122,7 +122,7 @@ impl<N: Number, C: Config<Number = N>> Grid<C> {
     /// An inactive grid whose pool holds [`Config::grid_entries`] for `objects` objects.
     pub fn inactive(objects: usize) -> Self {
         let entries = C::grid_entries(objects);
-        Self { cells: None, side: GRID_SIZE, starts: C::ScreenCells::filled(MAX_CELLS + 1, C::Index::default()), pool: C::GridPool::filled(entries, Entry::default()), depth: C::GridPool::filled(entries, -N::MAX) }
+        Self { cells: None, side: 0, starts: C::ScreenCells::filled(MAX_CELLS + 1, C::Index::default()), pool: C::GridPool::filled(entries, Entry::default()), depth: C::GridPool::filled(entries, -N::MAX) }
     }
 
     /// The entries the pool holds.
@@ -373,7 +373,7 @@ impl<N: Number, C: Config<Number = N>> Grid<C> {
     #[inline]
     pub fn cell(&self, column: u16, row: u16) -> Option<CellAt<'_, C>> {
         let CellSize { width, height } = self.cells?;
-        let (cell_column, cell_row) = ((column / width).min(self.side - 1), (row / height).min(self.side - 1));
+        let (cell_column, cell_row) = ((column / width).min(self.side.saturating_sub(1)), (row / height).min(self.side.saturating_sub(1)));
         let cell = usize::from(cell_row) * usize::from(self.side) + usize::from(cell_column);
         let starts = self.starts.slots();
         let (Some(start), Some(end)) = (starts.get(cell), starts.get(cell + 1)) else { return Some((&[], &[], 0, 0)) };

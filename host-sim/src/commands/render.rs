@@ -17,7 +17,7 @@ use embedded_graphics::pixelcolor::RgbColor;
 
 #[derive(clap::Args, Clone, Debug)]
 pub struct RenderArgs {
-    /// The scene (.mts).
+    /// The scene (.mts, or NFF: .nff, .nff.gz).
     pub scene: PathBuf,
     /// Write the image as a PNG.
     #[arg(long, value_name = "IMAGE.png")]

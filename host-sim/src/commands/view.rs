@@ -47,7 +47,7 @@ use ui::window::View;
 
 #[derive(clap::Args, Clone, Debug)]
 pub struct ViewArgs {
-    /// The scene to show (.mts).
+    /// The scene to show (.mts, or NFF: .nff, .nff.gz).
     pub scene: PathBuf,
     /// The number type to trace in (N cycles it in the window).
     #[arg(long, value_parser = crate::number_type::number_kind_parser(), default_value = "f64")]
