@@ -109,7 +109,7 @@ pub fn markdown(rows: &[SpdRow]) -> String {
             Outcome::Ran { frame_instructions, instructions_per_pixel, flash_bytes, static_ram_bytes, stack_peak_bytes, differing_pixels } => format!(
                 "| {} | {} | runs | {} | {} | {} | {} | {} | {} |\n",
                 row.scene,
-                row.objects,
+                crate::report::thousands(row.objects as u64),
                 crate::report::thousands(*frame_instructions),
                 crate::report::thousands(*instructions_per_pixel),
                 crate::report::thousands(*flash_bytes),
@@ -117,8 +117,26 @@ pub fn markdown(rows: &[SpdRow]) -> String {
                 crate::report::thousands(*stack_peak_bytes),
                 if *differing_pixels == 0 { "=".to_owned() } else { format!("{differing_pixels} differ") }
             ),
-            Outcome::DoesNotFit(reason) => format!("| {} | {} | {reason} | | | | | | |\n", row.scene, row.objects),
+            Outcome::DoesNotFit(reason) => format!("| {} | {} | {reason} | | | | | | |\n", row.scene, crate::report::thousands(row.objects as u64)),
         };
     }
     text
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_scene_that_ran_has_its_figures_and_one_that_does_not_fit_what_it_needs() {
+        let rows = [
+            SpdRow { scene: "tree3".into(), objects: 32, outcome: Outcome::Ran { frame_instructions: 57_785_276, instructions_per_pixel: 7_053, flash_bytes: 41_432, static_ram_bytes: 10_808, stack_peak_bytes: 16_536, differing_pixels: 0 } },
+            SpdRow { scene: "balls1".into(), objects: 12, outcome: Outcome::Ran { frame_instructions: 1, instructions_per_pixel: 1, flash_bytes: 1, static_ram_bytes: 1, stack_peak_bytes: 1, differing_pixels: 3 } },
+            SpdRow { scene: "tree".into(), objects: 8192, outcome: Outcome::DoesNotFit("needs 6,526,072 bytes of RAM (...), the mps2-an386 has 65,536".into()) },
+        ];
+        let text = markdown(&rows);
+        assert!(text.contains("| tree3 | 32 | runs | 57,785,276 | 7,053 | 41,432 | 10,808 | 16,536 | = |\n"), "{text}");
+        assert!(text.contains("| balls1 | 12 | runs | 1 | 1 | 1 | 1 | 1 | 3 differ |\n"), "{text}");
+        assert!(text.contains("| tree | 8,192 | needs 6,526,072 bytes of RAM (...), the mps2-an386 has 65,536 | | | | | | |\n"), "{text}");
+    }
 }
