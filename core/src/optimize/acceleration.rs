@@ -272,7 +272,7 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
         #[cfg(feature = "acceleration-tables")]
         {
             self.hierarchy_nodes = 0;
-            if C::HIERARCHY && N::FLOATING_POINT && tuning.shadow_culling && optimizations.extents && count > super::shadow_culling::BlockerSet::CAPACITY {
+            if C::HIERARCHY && tuning.shadow_culling && optimizations.extents && count > super::shadow_culling::BlockerSet::CAPACITY {
                 self.hierarchy_nodes = build_hierarchy::<C>(count, &of, self.hierarchy.slots_mut(), self.hierarchy_order.slots_mut());
             }
         }

@@ -53,8 +53,8 @@ pub fn build<N: Number, I: Index>(boxes: &[WorldBox], owner: impl Fn(usize) -> u
         return 0;
     }
     // The margin: a ray's parameter rounded in N moves the point it names by a few units in the
-    // last place of the scene's coordinates; 2⁻¹⁴ of the scene's size is far beyond that in
-    // every float type.
+    // last place of the scene's coordinates (or of fixed point's resolution); 2⁻¹⁴ of the
+    // scene's size and four steps of resolution are far beyond that in every type.
     let (scene_low, scene_high) = union(boxes.iter());
     let size = (0..3).map(|k| scene_high[k] - scene_low[k]).fold(0.0, f64::max);
     let largest = (0..3).map(|k| scene_low[k].abs().max(scene_high[k].abs())).fold(0.0, f64::max);
