@@ -50,6 +50,16 @@ impl<N: Number> AffineTransform<N> {
         Vector3::new(N::dot3(v, c[0]), N::dot3(v, c[1]), N::dot3(v, c[2]))
     }
 
+    /// The vector `w` with `w · linear = v` (Cramer's rule over the stored columns); `None` for
+    /// a singular linear part or a quotient beyond the type.
+    pub fn vector_preimage(&self, v: Vector3<N>) -> Option<Vector3<N>> {
+        let [a, b, c] = self.columns.map(|[x, y, z]| Vector3::new(x, y, z));
+        let (bc, ca, ab) = (b.cross(c), c.cross(a), a.cross(b));
+        let determinant = a.dot(bc);
+        let sum = bc * v.x + ca * v.y + ab * v.z;
+        Some(Vector3::new(sum.x.checked_div(determinant)?, sum.y.checked_div(determinant)?, sum.z.checked_div(determinant)?))
+    }
+
     /// `transformpoint`: `p · linear + translation`.
     #[inline]
     pub fn point(&self, p: Vector3<N>) -> Vector3<N> {
@@ -71,5 +81,24 @@ impl<N: Number> AffineTransform<N> {
         let c = &self.columns;
         let row = |r: usize| N::dot3([c[0][r], c[1][r], c[2][r]], [v.x, v.y, v.z]);
         Vector3::new(row(0), row(1), row(2))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The preimage taken back through the transform is the vector; a singular map has none.
+    #[test]
+    fn the_preimage_of_a_vector_maps_back_onto_it() {
+        let transform = AffineTransform::<f64>::from_parts([[2.0, 0.5, -1.0], [0.3, -3.0, 0.25], [1.5, 0.0, 4.0]], [1.0, 2.0, 3.0]);
+        let v = Vector3::new(0.7, -1.3, 2.9);
+        let w = transform.vector_preimage(v).unwrap();
+        let back = transform.vector(w);
+        for (a, b) in back.to_array().into_iter().zip(v.to_array()) {
+            assert!((a - b).abs() < 1e-12, "{back:?} against {v:?}");
+        }
+        let singular = AffineTransform::<f64>::from_parts([[1.0, 2.0, 3.0], [2.0, 4.0, 6.0], [0.0, 1.0, 0.0]], [0.0; 3]);
+        assert_eq!(singular.vector_preimage(v), None);
     }
 }

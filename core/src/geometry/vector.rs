@@ -38,6 +38,11 @@ impl<N: Number> Vector3<N> {
         N::dot3(self.to_array(), other.to_array())
     }
 
+    /// `self × other`.
+    pub fn cross(self, other: Self) -> Self {
+        Self::new(self.y * other.z - self.z * other.y, self.z * other.x - self.x * other.z, self.x * other.y - self.y * other.x)
+    }
+
     #[inline]
     pub fn length(self) -> N {
         N::length3(self.to_array())

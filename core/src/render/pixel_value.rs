@@ -66,7 +66,7 @@ pub(crate) fn primary_surface_then<N: Number, R, C: Config<Number = N>>(
     // Normal to world space through the inverse transpose (the thesis used the forward
     // matrix, digest §11 B2), facing the viewer (seen from inside, a surface's inner side).
     let at = SurfacePoint::new(object.object_from_world.transposed_vector(hit.local_normal), &ray, hit.t, hit.object);
-    let lighting = direct_lighting(scene, hit.object, at.point, at.normal, ray.direction, object.material.power, statistics, cache, culling);
+    let lighting = direct_lighting(scene, hit.object, at.lit_point(object, &ray, hit.t), at.normal, ray.direction, object.material.power, statistics, cache, culling);
     Some(then(&at, &object.material, lighting, statistics, cache))
 }
 

@@ -150,7 +150,7 @@ fn surface<N: Number, Colours: NodeColours<N>, C: Config<Number = N>>(
     let object = hit.object;
     let prepared = super::intersect::surface_of(scene, hit)?;
     let at = SurfacePoint::new(prepared.object_from_world.transposed_vector(hit.local_normal), ray, hit.t, object);
-    let lighting = direct_lighting(scene, object, at.point, at.normal, ray.direction, prepared.material.power, statistics, cache, context.culling);
+    let lighting = direct_lighting(scene, object, at.lit_point(prepared, ray, hit.t), at.normal, ray.direction, prepared.material.power, statistics, cache, context.culling);
     Some((at, context.colours.local(&prepared.material, lighting, context.pixel)))
 }
 

@@ -47,4 +47,21 @@ impl<N: Number> SurfacePoint<N> {
         }
         Self { object, point: ray.at(t), normal, direction: ray.direction, entering }
     }
+
+    /// Where the point's shadow rays start: the point, or on a patch seen from the side its
+    /// normals face, the point lifted onto the smooth surface they describe
+    /// (`shapes::triangle::terminator_lift`; `ray` and `t` the hit's).
+    #[inline(always)]
+    pub fn lit_point(&self, object: &crate::model::Object<N>, ray: &Ray<N>, t: N) -> Vector3<N> {
+        #[cfg(feature = "triangle")]
+        if let (crate::model::Primitive::Patch(normals), true) = (object.primitive, self.entering) {
+            let local = object.object_from_world.ray(ray).at(t);
+            if let Some(lift) = object.object_from_world.vector_preimage(crate::shapes::triangle::terminator_lift(local.x, local.y, normals)) {
+                return self.point + lift;
+            }
+        }
+        #[cfg(not(feature = "triangle"))]
+        let _ = (object, ray, t);
+        self.point
+    }
 }

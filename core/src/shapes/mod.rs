@@ -34,7 +34,7 @@ mod sphere;
 #[cfg(feature = "torus")]
 mod torus;
 #[cfg(feature = "triangle")]
-mod triangle;
+pub(crate) mod triangle;
 
 pub use bounds::{Interval, ScaledInterval};
 pub use hit::Hit;
