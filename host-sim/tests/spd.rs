@@ -118,6 +118,12 @@ fn bench_spd_reports_each_scene_and_the_ladder() {
     assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
     assert!(report.contains("| tree-s6 | 256 |") && report.contains("| tree-s7 | 512 |"), "{report}");
     assert!(report.contains("| tree | 256, 512 |"), "{report}");
+    // The item buffer's rows: the hit cache's tests per primary ray, then the ideal buffer's,
+    // never more.
+    let item_buffer = report.split("## The item buffer").nth(1).unwrap_or_else(|| panic!("{report}"));
+    let row = item_buffer.lines().find(|line| line.starts_with("| tree-s6 |")).unwrap_or_else(|| panic!("{report}"));
+    let figures: Vec<f64> = row.split('|').filter_map(|cell| cell.trim().parse().ok()).collect();
+    assert!(figures.len() == 2 && figures[1] <= figures[0] && figures[1] > 0.0, "{row}");
     let output = run(&["bench", "--spd", "--spd-scenes", "forest"]);
     assert_eq!(output.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&output.stderr).contains("--spd-scenes: no SPD scene `forest`"), "{}", String::from_utf8_lossy(&output.stderr));
