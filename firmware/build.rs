@@ -117,7 +117,7 @@ fn write_stack_reserve(source: &mut String) {
 /// RAM the scene would need on the board (the same check, in the target's own layout), so a
 /// report can say what such a scene needs. It never links.
 fn size_only(scene_path: &Path, text: &[u8], (width, height): (u16, u16), (number, number_name): (&str, &str), board: Board, memory: &Memory, out_dir: &Path) {
-    let parsed: Result<microtrace::model::Description<Objects>, _> = microtrace::parser::parse_file(&scene_path.to_string_lossy(), text);
+    let parsed: Result<microtrace::model::Description<Vec<microtrace::model::ObjectDescription>>, _> = microtrace::parser::parse_file(&scene_path.to_string_lossy(), text);
     let mut description = parsed.unwrap_or_else(|error| fail(&in_file(scene_path, &error)));
     description.fit_to_size(width, height);
     let mut source = generate(&description, scene_path, number, number_name, board);
@@ -130,41 +130,6 @@ fn size_only(scene_path: &Path, text: &[u8], (width, height): (u16, u16), (numbe
     writeln!(source, "/// The objects the build prepares ahead at most (firmware/build.rs).\npub const PREPARED_AHEAD_AT_MOST: usize = {PARSE_CAPACITY};").unwrap();
     println!("cargo:rustc-cfg=microtrace_sizing");
     std::fs::write(out_dir.join("scene.rs"), source).unwrap();
-}
-
-/// A scene's objects in a growing list, for [`size_only`].
-#[derive(Clone, Default)]
-struct Objects(Vec<microtrace::model::ObjectDescription>);
-
-impl std::ops::Deref for Objects {
-    type Target = [microtrace::model::ObjectDescription];
-
-    fn deref(&self) -> &Self::Target {
-        &self.0
-    }
-}
-
-impl std::ops::DerefMut for Objects {
-    fn deref_mut(&mut self) -> &mut Self::Target {
-        &mut self.0
-    }
-}
-
-impl microtrace::storage::List<microtrace::model::ObjectDescription> for Objects {
-    const CAPACITY: usize = usize::MAX;
-
-    fn push(&mut self, item: microtrace::model::ObjectDescription) -> Result<(), microtrace::model::ObjectDescription> {
-        self.0.push(item);
-        Ok(())
-    }
-
-    fn pop(&mut self) -> Option<microtrace::model::ObjectDescription> {
-        self.0.pop()
-    }
-
-    fn clear(&mut self) {
-        self.0.clear();
-    }
 }
 
 fn env(name: &str) -> Option<String> {

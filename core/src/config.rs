@@ -146,6 +146,10 @@ impl<N, const K: usize> SolidStorage<N> for heapless::Vec<PreparedSolidNode<N>, 
 /// average (24); none without the `acceleration-tables` feature (no grid).
 pub const DEFAULT_GRID_ENTRIES_PER_OBJECT: usize = if cfg!(feature = "acceleration-tables") { 24 } else { 0 };
 
+/// The screen grid's cells on an array: the thesis's 20x20 (`optimize::grid::GRID_SIZE`), none
+/// without the `acceleration-tables` feature (the grid is then inactive).
+pub const SCREEN_GRID_CELLS: usize = if cfg!(feature = "acceleration-tables") { 20 * 20 } else { 0 };
+
 /// The ray tree's depth by default: the format's deepest.
 pub const DEFAULT_TREE_DEPTH: usize = MAX_DEPTH as usize;
 
@@ -195,7 +199,7 @@ where
     type SpaceEntries = [[u16; SPACE_ENTRIES_PER_OBJECT]; K];
     type BlockerLists = [u16; 0];
     type Hierarchy<T: Copy> = [T; 0];
-    type ScreenCells<T: Copy> = [T; crate::optimize::grid::CELLS + 1];
+    type ScreenCells<T: Copy> = [T; SCREEN_GRID_CELLS + 1];
     type TreeStack<T: Clone> = heapless::Vec<T, DEPTH>;
     type CornerRow = [[u8; 3]; ROW];
     const MAX_OBJECTS: usize = K;

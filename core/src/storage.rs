@@ -71,6 +71,25 @@ pub trait List<T>: Deref<Target = [T]> + DerefMut + Default + Clone {
     }
 }
 
+/// A host's list as long as memory allows (the `alloc` feature: build scripts and host tools).
+#[cfg(feature = "alloc")]
+impl<T: Clone> List<T> for alloc::vec::Vec<T> {
+    const CAPACITY: usize = usize::MAX;
+
+    fn push(&mut self, item: T) -> Result<(), T> {
+        alloc::vec::Vec::push(self, item);
+        Ok(())
+    }
+
+    fn pop(&mut self) -> Option<T> {
+        alloc::vec::Vec::pop(self)
+    }
+
+    fn clear(&mut self) {
+        alloc::vec::Vec::clear(self);
+    }
+}
+
 impl<T: Clone, const K: usize> List<T> for heapless::Vec<T, K> {
     const CAPACITY: usize = K;
 

@@ -352,7 +352,7 @@ fn primitive_features(scene: &Path) -> Result<Vec<&'static str>, String> {
 
 /// The scene parsed whatever its size (its features, for a build that only sizes a scene of
 /// more objects than the build prepares ahead: firmware/build.rs's `size_only`).
-fn parse_any_size(scene: &Path) -> Result<microtrace::model::Description<Growing>, String> {
+fn parse_any_size(scene: &Path) -> Result<microtrace::model::Description<Vec<microtrace::model::ObjectDescription>>, String> {
     let text = std::fs::read(scene).map_err(|error| format!("scene {}: {error}", scene.display()))?;
     microtrace::parser::parse_file(&scene.to_string_lossy(), &text).map_err(|error| {
         if error.line == 0 { format!("{}: {error}", scene.display()) } else { format!("{}:{error}", scene.display()) }
@@ -362,41 +362,6 @@ fn parse_any_size(scene: &Path) -> Result<microtrace::model::Description<Growing
 /// The objects of the scene as traced (an NFF polygon counts its triangles), whatever its size.
 pub fn scene_objects(scene: &Path) -> Result<usize, String> {
     parse_any_size(scene).map(|description| description.objects.len())
-}
-
-/// A list of objects as long as the scene's.
-#[derive(Clone, Default)]
-pub struct Growing(Vec<microtrace::model::ObjectDescription>);
-
-impl std::ops::Deref for Growing {
-    type Target = [microtrace::model::ObjectDescription];
-
-    fn deref(&self) -> &Self::Target {
-        &self.0
-    }
-}
-
-impl std::ops::DerefMut for Growing {
-    fn deref_mut(&mut self) -> &mut Self::Target {
-        &mut self.0
-    }
-}
-
-impl microtrace::storage::List<microtrace::model::ObjectDescription> for Growing {
-    const CAPACITY: usize = usize::MAX;
-
-    fn push(&mut self, item: microtrace::model::ObjectDescription) -> Result<(), microtrace::model::ObjectDescription> {
-        self.0.push(item);
-        Ok(())
-    }
-
-    fn pop(&mut self) -> Option<microtrace::model::ObjectDescription> {
-        self.0.pop()
-    }
-
-    fn clear(&mut self) {
-        self.0.clear();
-    }
 }
 
 /// The scene parsed with the same parser and capacity as the firmware's build script, its

@@ -169,8 +169,10 @@ fn split<I: Index>(members: &mut [I], depth: usize, centre: &impl Fn(&I, usize) 
     middle
 }
 
-fn area(low: [f64; 3], high: [f64; 3]) -> f64 {
-    super::early_split::area(&(low, high))
+/// Half a box's surface area.
+pub(crate) fn area(low: [f64; 3], high: [f64; 3]) -> f64 {
+    let d = [0, 1, 2].map(|k| (high[k] - low[k]).max(0.0));
+    d[0] * d[1] + d[1] * d[2] + d[2] * d[0]
 }
 
 /// The box around the boxes.

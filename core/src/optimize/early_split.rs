@@ -133,9 +133,8 @@ fn bounds(piece: &Piece) -> WorldBox {
 }
 
 /// Half a box's surface area.
-pub(crate) fn area((low, high): &WorldBox) -> f64 {
-    let d = [0, 1, 2].map(|k| (high[k] - low[k]).max(0.0));
-    d[0] * d[1] + d[1] * d[2] + d[2] * d[0]
+fn area((low, high): &WorldBox) -> f64 {
+    super::bvh::area(*low, *high)
 }
 
 #[cfg(test)]

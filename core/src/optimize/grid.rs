@@ -36,8 +36,10 @@ use super::sortlist::{heapsort, INSERTION_SORT_BELOW};
 pub const GRID_SIZE: u16 = 20;
 /// The most cells across and down of a grid whose storage is sized at run time.
 pub const MAX_GRID_SIZE: u16 = 64;
-/// No cells at all without the `acceleration-tables` feature (the grid is then inactive).
-pub const CELLS: usize = if super::build_options::TABLES { GRID_SIZE as usize * GRID_SIZE as usize } else { 0 };
+/// No cells at all without the `acceleration-tables` feature (the grid is then inactive): an
+/// array's cells, `Config::ScreenCells`.
+pub const CELLS: usize = crate::config::SCREEN_GRID_CELLS;
+const _: () = assert!(CELLS == 0 || CELLS == GRID_SIZE as usize * GRID_SIZE as usize);
 /// [`MAX_GRID_SIZE`]'s cells.
 const MAX_CELLS: usize = if super::build_options::TABLES { MAX_GRID_SIZE as usize * MAX_GRID_SIZE as usize } else { 0 };
 /// What an entry knows of its object within the cell.
