@@ -1,6 +1,7 @@
 //! Scenes far beyond a microcontroller's: the host's tables are sized by the scene (issue 22),
-//! so ten thousand objects render with every optimization, in the same image as with none, and
-//! more objects than a `u16` numbers keep every one in the test order.
+//! so ten thousand objects render with every optimization, in the same image as with none,
+//! preparing them grows like n·log n, and more objects than a `u16` numbers keep every one in
+//! the test order.
 
 use microtrace::pixel::FrameBuffer;
 use microtrace::render::{render, Pga, Statistics, Whole};
@@ -43,6 +44,33 @@ fn ten_thousand_spheres_render_with_every_optimization_as_with_none() {
     let (none, unoptimized) = rendered(&description);
     assert!(unoptimized.ro_tests >= 10_000 * unoptimized.rays_traced, "without the optimizations every ray tests every sphere");
     assert!(all == none, "the optimizations change no pixel");
+}
+
+/// Preparing grows like n·log n, not like the pairs of objects (issue 24: the hierarchy's
+/// build, the grid, the depth order): 20,000 spheres against 2,000, each the fastest of five
+/// preparations, side by side in one run. n·log n makes the ratio about 13, n² about 100; the
+/// bound leaves room for a loaded machine.
+#[test]
+fn preparation_grows_no_faster_than_n_log_n() {
+    let fastest = |count: usize| {
+        let description = field(count, 64, 48);
+        let scene = HostPrepared::<f32>::prepare(&description).unwrap();
+        assert!(scene.acceleration.hierarchy().is_some(), "{count} spheres have the hierarchy");
+        (0..5)
+            .map(|_| {
+                let started = std::time::Instant::now();
+                let scene = HostPrepared::<f32>::prepare(&description).unwrap();
+                let elapsed = started.elapsed();
+                drop(scene);
+                elapsed
+            })
+            .min()
+            .unwrap_or_default()
+    };
+    let (small, large) = (fastest(2_000), fastest(20_000));
+    let ratio = large.as_secs_f64() / small.as_secs_f64().max(1e-6);
+    println!("preparing 20,000 spheres: {large:?}; 2,000: {small:?}; ratio {ratio:.1}");
+    assert!(ratio < 40.0, "20,000 spheres took {ratio:.1} times as long to prepare as 2,000 ({large:?} against {small:?})");
 }
 
 #[test]

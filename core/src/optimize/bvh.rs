@@ -405,9 +405,16 @@ mod tests {
     }
 
     #[test]
-    fn visits_every_box_the_segment_meets_in_f64_and_f32() {
+    fn visits_every_box_the_segment_meets_in_every_number_type() {
         visits_every_box_the_segment_meets::<f64>();
         visits_every_box_the_segment_meets::<f32>();
+        #[cfg(feature = "fixed-point")]
+        {
+            visits_every_box_the_segment_meets::<crate::number::Fixed>();
+            visits_every_box_the_segment_meets::<crate::number::Fixed16>();
+        }
+        #[cfg(feature = "soft-float")]
+        visits_every_box_the_segment_meets::<crate::number::SoftFloat>();
     }
 
     #[test]
