@@ -98,7 +98,9 @@ impl Palette {
             let distance = (rgb[0] - cr).pow(2) + (rgb[1] - cg).pow(2) + (rgb[2] - cb).pow(2);
             let Some(last) = nearest.last() else { break };
             // Strictly nearer only: ties keep the lower index, as `nearest` does.
-            if distance >= last.0 || nearest.iter().any(|kept| kept.2 == rgb && kept.0 != i32::MAX) {
+            // (Component by component: an array's `==` is a `memcmp` call on the chip.)
+            let same = |kept: &[i32; 3]| kept[0] == rgb[0] && kept[1] == rgb[1] && kept[2] == rgb[2];
+            if distance >= last.0 || nearest.iter().any(|kept| same(&kept.2) && kept.0 != i32::MAX) {
                 continue;
             }
             let mut slot = KEPT - 1;
