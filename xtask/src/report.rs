@@ -96,6 +96,14 @@ pub fn does_not_fit(error: &str) -> Option<String> {
     Some(reason.split(" (firmware/README.md").next().unwrap_or(reason).to_owned())
 }
 
+/// The pixels of a run's `framebuffer.bin` that differ from the host's render of `scene` in
+/// the same number type and optimizations (all of them when the sizes differ).
+pub fn differing_from_host(result: &firmware::FirmwareRun, scene: &std::path::Path, number: &str, optimizations: &str) -> Result<u64, String> {
+    let framebuffer = std::fs::read(&result.framebuffer).map_err(|error| format!("{}: {error}", result.framebuffer.display()))?;
+    let host = crate::host_render::render(scene, number, optimizations).map_err(|error| format!("the host render: {error}"))?;
+    Ok(if framebuffer.len() == host.len() { framebuffer.iter().zip(&host).filter(|(chip, host)| chip != host).count() as u64 } else { host.len() as u64 })
+}
+
 /// A real-board example's image (the UF2 file a user flashes) run in the rp2040js emulator
 /// (`crate::pico`): snooker in `f32` at its display's size, from reset to the last display byte.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -348,13 +356,7 @@ pub fn run(filter: &ReportFilter) -> Result<Vec<ReportRun>, String> {
                 None => return Err(format!("{label}: {error}")),
             },
         };
-        let framebuffer = std::fs::read(&result.framebuffer).map_err(|error| format!("{label}: {}: {error}", result.framebuffer.display()))?;
-        let host = crate::host_render::render(scene, number, optimizations).map_err(|error| format!("{label}: the host render: {error}"))?;
-        let differing_pixels = if framebuffer.len() == host.len() {
-            framebuffer.iter().zip(&host).filter(|(chip, host)| chip != host).count() as u64
-        } else {
-            host.len() as u64
-        };
+        let differing_pixels = differing_from_host(&result, scene, number, optimizations).map_err(|error| format!("{label}: {error}"))?;
         let get = |key: &str| result.numbers.get(key).copied().ok_or_else(|| format!("{label}: the report lacks `{key}`"));
         let run = ReportRun {
             scene: stem,

@@ -48,9 +48,7 @@ pub fn run() -> Result<Vec<SpdRow>, String> {
         let options = FirmwareOptions::new(path, BOARD, NUMBER, work.join(name));
         let outcome = match firmware::run(&options) {
             Ok(result) => {
-                let framebuffer = std::fs::read(&result.framebuffer).map_err(|error| format!("{name}: {}: {error}", result.framebuffer.display()))?;
-                let host = crate::host_render::render(path, NUMBER, "scene").map_err(|error| format!("{name}: the host render: {error}"))?;
-                let differing_pixels = if framebuffer.len() == host.len() { framebuffer.iter().zip(&host).filter(|(chip, host)| chip != host).count() as u64 } else { host.len() as u64 };
+                let differing_pixels = crate::report::differing_from_host(&result, path, NUMBER, "scene").map_err(|error| format!("{name}: {error}"))?;
                 let get = |key: &str| result.numbers.get(key).copied().ok_or_else(|| format!("{name}: the report lacks `{key}`"));
                 Outcome::Ran {
                     frame_instructions: get("frame_instructions")?,
