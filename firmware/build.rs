@@ -123,6 +123,8 @@ fn size_only(scene_path: &Path, text: &[u8], (width, height): (u16, u16), (numbe
     let mut source = generate(&description, scene_path, number, number_name, board);
     memory.write(&mut source);
     write_stack_reserve(&mut source);
+    // As a build that prepares it would: a hierarchy for many objects with Extents on.
+    write_hierarchy_flag(&mut source, description.objects.len() > microtrace::optimize::HIERARCHY_AHEAD_ABOVE && description.optimizations.extents);
     writeln!(source, "/// Sizing only: no object is prepared ahead.").unwrap();
     writeln!(source, "pub static OBJECTS_AHEAD: [microtrace::model::Object<Number>; 0] = [];").unwrap();
     writeln!(source, "pub static SOLID_NODES_AHEAD: [microtrace::model::PreparedSolidNode<Number>; 0] = [];").unwrap();
@@ -130,6 +132,12 @@ fn size_only(scene_path: &Path, text: &[u8], (width, height): (u16, u16), (numbe
     writeln!(source, "/// The objects the build prepares ahead at most (firmware/build.rs).\npub const PREPARED_AHEAD_AT_MOST: usize = {PARSE_CAPACITY};").unwrap();
     println!("cargo:rustc-cfg=microtrace_sizing");
     std::fs::write(out_dir.join("scene.rs"), source).unwrap();
+}
+
+/// `HIERARCHY_IN_FLASH`: whether the scene's shadow and secondary rays walk a hierarchy kept in
+/// flash (then no shadow tables are built on the stack: src/ram.rs).
+fn write_hierarchy_flag(source: &mut String, hierarchy: bool) {
+    writeln!(source, "/// Whether a hierarchy of boxes made ahead is in flash (src/ram.rs: no shadow tables).\npub const HIERARCHY_IN_FLASH: bool = {hierarchy};").unwrap();
 }
 
 fn env(name: &str) -> Option<String> {
@@ -327,8 +335,21 @@ fn ahead<H: microtrace::number::Number>(description: &SceneDescription<PARSE_CAP
     let mut scene = Box::new(microtrace::scene::Scene::<H, PARSE_CAPACITY>::UNPREPARED);
     scene.prepare_in_place(description, &description.objects).map_err(Ahead::Scene)?;
     let bounds: Vec<ObjectBounds<H>> = description.objects.iter().map(ObjectBounds::ahead).collect();
+    // A scene of many objects: the hierarchy of boxes its host preparation would build, in
+    // flash (the chip has no f64 to build it); used with Extents on, as on the host.
+    let objects = &description.objects[..];
+    let references = microtrace::optimize::hierarchy_references(objects.len());
+    let mut nodes = vec![microtrace::optimize::bvh::BvhNode::<H>::UNSET; references];
+    let mut order = vec![0u16; references];
+    let (mut boxes, mut triangles) = (vec![([0.0; 3], [0.0; 3]); objects.len()], vec![None; objects.len()]);
+    let (mut pieces, mut owners) = (vec![([0.0; 3], [0.0; 3]); references], vec![0; references]);
+    let scratch = microtrace::optimize::HierarchyScratch { boxes: &mut boxes, triangles: &mut triangles, references: &mut pieces, owners: &mut owners };
+    let used = if scene.optimizations.extents { microtrace::optimize::hierarchy_ahead(objects, scratch, &mut nodes, &mut order) } else { 0 };
+    let leaves = nodes[..used].iter().filter(|node| node.count > 0).map(|node| (node.first + node.count) as usize).max().unwrap_or(0);
+    let hierarchy = (used > 0).then(|| microtrace::optimize::bvh::Bvh { nodes: &nodes[..used], order: &order[..leaves] });
     let mut text = String::new();
-    microtrace::scene::ahead::write_prepared_ahead(&*scene, &bounds, &mut text).map_err(Ahead::Write)?;
+    write_hierarchy_flag(&mut text, used > 0);
+    microtrace::scene::ahead::write_prepared_ahead(&*scene, &bounds, hierarchy, &mut text).map_err(Ahead::Write)?;
     out.push_str(&text);
     Ok(())
 }

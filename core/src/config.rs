@@ -74,6 +74,10 @@ pub trait Config: 'static {
     /// (`optimize::bvh`), in place of the blocker tables, whose work grows with the pairs of
     /// objects: a host's, for scenes of thousands of objects (Haines' SPD).
     const HIERARCHY: bool = false;
+    /// Whether the scene comes with a hierarchy made ahead (the firmware's, in flash, for more
+    /// than 128 objects: `scene::ahead::PreparedAhead::hierarchy`): the code that walks one is
+    /// linked only then.
+    const HIERARCHY_AHEAD: bool = false;
 
     /// The grid's pool entries for a scene of `objects` objects (a table sized at run time is
     /// made this long; an array keeps its length).
@@ -159,8 +163,9 @@ pub const DEFAULT_ANTIALIAS_ROW: usize = 2049;
 
 /// Every table an array of a capacity fixed at compile time: `K` objects (kept in `O`),
 /// `POOL` grid entries per object, a ray tree `DEPTH` deep and antialiasing rows of `ROW`
-/// corners, the solids' nodes in `S`, the look-up table in `P`, `OTHER_LIGHTS` lights after the first. The firmware's scene is one (sized by its scene), and so
-/// are the tests'.
+/// corners, the solids' nodes in `S`, the look-up table in `P`, `OTHER_LIGHTS` lights after the
+/// first, and a hierarchy made ahead if `HIERARCHY_AHEAD` (`Config::HIERARCHY_AHEAD`). The
+/// firmware's scene is one (sized by its scene), and so are the tests'.
 pub struct Arrays<
     N,
     const K: usize,
@@ -171,15 +176,16 @@ pub struct Arrays<
     S = heapless::Vec<PreparedSolidNode<N>, MAX_SOLID_NODES>,
     P = OwnedPalette,
     const OTHER_LIGHTS: usize = { MAX_LIGHTS - 1 },
+    const HIERARCHY_AHEAD: bool = false,
 >(PhantomData<(N, O, S, P)>);
 
-impl<N, const K: usize, O, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize> Debug for Arrays<N, K, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS> {
+impl<N, const K: usize, O, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize, const HIERARCHY_AHEAD: bool> Debug for Arrays<N, K, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS, HIERARCHY_AHEAD> {
     fn fmt(&self, formatter: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         write!(formatter, "Arrays<{K} objects, {POOL} grid entries each, depth {DEPTH}, row {ROW}>")
     }
 }
 
-impl<N, const K: usize, O, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize> Config for Arrays<N, K, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS>
+impl<N, const K: usize, O, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize, const HIERARCHY_AHEAD: bool> Config for Arrays<N, K, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS, HIERARCHY_AHEAD>
 where
     N: Number + 'static,
     O: Objects<N> + 'static,
@@ -205,6 +211,7 @@ where
     const MAX_OBJECTS: usize = K;
     const GRID_ENTRIES_PER_OBJECT: usize = POOL;
     const TREE_DEPTH: usize = DEPTH;
+    const HIERARCHY_AHEAD: bool = HIERARCHY_AHEAD;
 }
 
 /// The space grid's cell entries per object on average at most (else no grid).

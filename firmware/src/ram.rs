@@ -32,10 +32,21 @@ use microtrace::optimize::shadow_culling::{BlockerSet, DirectionChord, LightReac
 
 use crate::scene;
 
-/// The stack the render's shadow tables take per object (render/shadow_tables.rs: `with_shadow_culling`,
+/// The stack the render's shadow tables take per object, or preparation's tables when a
+/// hierarchy in flash finds the shadow rays' blockers instead (`scene::HIERARCHY_IN_FLASH`: no
+/// shadow tables).
+const TABLES_PER_OBJECT: usize = if scene::HIERARCHY_IN_FLASH { PREPARATION_PER_OBJECT } else { SHADOW_TABLES_PER_OBJECT };
+
+/// Preparation's tables per object on the stack (optimize/acceleration.rs, `rebuild_with`: each
+/// object's screen capsule and primitive; optimize/grid.rs: its places in the grid's pool),
+/// twice: each table is made and then moved into place.
+const PREPARATION_PER_OBJECT: usize =
+    2 * (size_of::<microtrace::optimize::capsule::Capsule<scene::Number>>() + size_of::<microtrace::model::Primitive>() + scene::GRID_ENTRIES_PER_OBJECT * size_of::<u16>());
+
+/// The shadow tables per object (render/shadow_tables.rs: `with_shadow_culling`,
 /// `build_shadow_tables`, and for a scene with several lights `with_more_lights_culling`, whose
 /// tables hold the scene's other lights).
-const TABLES_PER_OBJECT: usize = size_of::<DirectionChord<scene::Number>>()
+const SHADOW_TABLES_PER_OBJECT: usize = size_of::<DirectionChord<scene::Number>>()
     + size_of::<BlockerSet>()
     + size_of::<LightReach<scene::Number>>()
     + size_of::<u16>()

@@ -43,11 +43,11 @@ fn the_spd_scenes_render_with_every_optimization_as_with_none() {
     let folder = Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes/spd");
     // Teapot and gears: thousands of triangles cut into pieces for the hierarchy (gears' faces
     // the longest, some of them glass).
-    for name in ["tree3.nff", "balls1.nff", "rings1.nff", "lattice1.nff", "jacks1.nff", "full/tree-s6.nff.gz", "full/rings-s2.nff.gz", "full/teapot.nff.gz", "full/gears.nff.gz"] {
+    for name in ["tree3.nff", "balls1.nff", "rings1.nff", "balls2.nff", "lattice1.nff", "jacks1.nff", "full/tree-s6.nff.gz", "full/rings-s2.nff.gz", "full/teapot.nff.gz", "full/gears.nff.gz"] {
         let description = scene_file::load(&folder.join(name)).unwrap();
-        let many = description.objects.len() > 128;
+        let many = description.objects.len() > microtrace::optimize::HIERARCHY_ABOVE;
         let prepared = HostPrepared::<f32>::prepare(&description).unwrap();
-        assert_eq!(prepared.acceleration.hierarchy().is_some(), many, "{name}: a hierarchy exactly for more than 128 objects");
+        assert_eq!(prepared.acceleration.hierarchy().is_some(), many, "{name}: a hierarchy exactly for more than {} objects", microtrace::optimize::HIERARCHY_ABOVE);
         // The adaptive screen grid: √(objects/2) cells across, from the thesis's 20 to 64.
         let side = (20..=64).rev().find(|side: &usize| 2 * side * side <= description.objects.len()).unwrap_or(20);
         assert_eq!(prepared.acceleration.grid_side(), Some(side as u16), "{name}");

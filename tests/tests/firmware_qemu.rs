@@ -365,6 +365,32 @@ fn the_spd_tree_from_nff_on_mps2_an386_and_lm3s6965evb_matches_the_host() {
     firmware_picture_matches_host_in::<microtrace::number::SoftFloat>("spd/tree3.nff", Board::Lm3s6965evb);
 }
 
+/// A scene of more objects than the blocker sets hold (Haines' tree at size 6: 256 objects, 7
+/// lights) gets its hierarchy of boxes made at build time and kept in flash (the chip has no
+/// `f64` to build one; `optimize::hierarchy_ahead`): it walks it for its shadow and secondary
+/// rays, needs no per-object shadow tables on the stack, and so fits the Cortex-M4F's 64 KB
+/// (it needed 157,840 bytes without), rendering the host's picture, which the host made without
+/// a hierarchy.
+#[test]
+fn the_spd_tree_of_256_objects_walks_a_hierarchy_in_flash_on_mps2_an386() {
+    let out = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("firmware").join("mps2-an386-tree-s6-f32");
+    std::fs::create_dir_all(&out).unwrap();
+    let scene = xtask::spd_report::decompressed(&scene_path("spd/full/tree-s6.nff.gz"), &out.join("tree-s6.nff")).unwrap();
+    let options = FirmwareOptions::new(&scene, Board::Mps2An386, "f32", out.clone());
+    let run = firmware::run(&options).unwrap_or_else(|error| panic!("tree-s6 on mps2-an386: {error}"));
+    println!("{}", firmware::summary(&run, &options));
+    assert_eq!(xtask::report::differing_from_host(&run, &scene, "f32", "scene").unwrap(), 0, "tree-s6: pixels differ from the host's render");
+    linked_code_is_clean("tree-s6", Board::Mps2An386, &run.numbers);
+    // The hierarchy is in flash: its nodes (32 bytes each in f32) and its leaves' objects.
+    let elf = std::fs::read(&run.elf).unwrap();
+    let (symbols, _) = xtask::elf::flash_symbols(&elf).unwrap();
+    let bytes = |name: &str| symbols.iter().find(|symbol| symbol.demangled.ends_with(name)).map(|symbol| symbol.bytes);
+    let nodes = bytes("::HIERARCHY_NODES_AHEAD").expect("tree-s6: no hierarchy's nodes in flash");
+    let order = bytes("::HIERARCHY_ORDER_AHEAD").expect("tree-s6: no hierarchy's order in flash");
+    assert!(nodes >= 32 * 64 && nodes % 32 == 0, "tree-s6: {nodes} bytes of nodes");
+    assert!(order >= 2 * 256, "tree-s6: {order} bytes of the leaves' objects for 256 objects");
+}
+
 #[test]
 fn the_nut_in_soft32_on_lm3s6965evb_matches_the_host() {
     firmware_matches_host_in::<microtrace::number::SoftFloat>("csg/nut.mts", Board::Lm3s6965evb);

@@ -17,7 +17,8 @@ fn usage() -> &'static str {
       (default firmware/target/run/BOARD-SCENE-NUMBER). --provoke builds the fault test, which
       does that before preparing the scene: the run fails with the firmware's message.
       --stack-reserve: the stack the build's RAM check keeps free (default: 4 KB plus the
-                       render's shadow tables per object, at least 12288; on the 8 KB
+                       render's shadow tables per object (with a hierarchy in flash,
+                       preparation's tables), at least 12288; on the 8 KB
                        lm3s811evb 1.5 KB plus the tables, at least 3072; firmware/src/ram.rs).
       --progressive renders coarse to fine (8x8 blocks, then 4x4, 2x2, every pixel): the same
       image, the rays of each pass reported. --framebuffer builds the framebuffer render (the

@@ -67,6 +67,13 @@ pub struct Acceleration<C: Config> {
     hierarchy_order: C::Hierarchy<C::Index>,
     #[cfg(feature = "acceleration-tables")]
     hierarchy_nodes: usize,
+    /// A hierarchy built ahead (the firmware's, at build time, in flash): used in place of
+    /// one built here when the optimizations would build one.
+    #[cfg(feature = "acceleration-tables")]
+    hierarchy_ahead: Option<Bvh<'static, C::Number, C::Index>>,
+    /// Whether the hierarchy made ahead is in use (Extents and shadow culling on).
+    #[cfg(feature = "acceleration-tables")]
+    hierarchy_ahead_used: bool,
     grid: Grid<C>,
 }
 
@@ -95,12 +102,16 @@ impl<C: Config> Clone for Acceleration<C> {
             hierarchy_order: self.hierarchy_order.clone(),
             #[cfg(feature = "acceleration-tables")]
             hierarchy_nodes: self.hierarchy_nodes,
+            #[cfg(feature = "acceleration-tables")]
+            hierarchy_ahead: self.hierarchy_ahead,
+            #[cfg(feature = "acceleration-tables")]
+            hierarchy_ahead_used: self.hierarchy_ahead_used,
             grid: self.grid.clone(),
         }
     }
 }
 
-impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize> Acceleration<Arrays<N, K, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS>>
+impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize, const HIERARCHY_AHEAD: bool> Acceleration<Arrays<N, K, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS, HIERARCHY_AHEAD>>
 where
     S: crate::config::SolidStorage<N> + 'static,
     P: crate::config::PaletteStorage + 'static,
@@ -124,6 +135,10 @@ where
         hierarchy_order: [],
         #[cfg(feature = "acceleration-tables")]
         hierarchy_nodes: 0,
+        #[cfg(feature = "acceleration-tables")]
+        hierarchy_ahead: None,
+        #[cfg(feature = "acceleration-tables")]
+        hierarchy_ahead_used: false,
         grid: Grid::UNSET,
     };
 }
@@ -131,6 +146,20 @@ where
 /// The hierarchy's storage: boxes (references to objects, `early_split`) per object.
 #[cfg(feature = "acceleration-tables")]
 const REFERENCES_PER_OBJECT: usize = 2;
+
+/// A host's scene of more objects than this gets a hierarchy of boxes for its shadow and
+/// secondary rays in place of the blocker sets and the space grid (docs/pipeline.md, measured
+/// on the SPD scenes side by side, `f32`: balls2's 93 objects and rings1's 62 gain, tree3's 32,
+/// lattice1's 20 and balls1's 12 lose).
+pub const HIERARCHY_ABOVE: usize = 48;
+
+/// The firmware's scene of more objects than this gets one, made ahead ([`hierarchy_ahead`]):
+/// the blocker sets' capacity. Below it the sets cost the Cortex-M4F less than the walk (balls2,
+/// 93 objects: 120.6 M instructions a frame with them, 140.6 M with the hierarchy); above it the
+/// per-object shadow tables the sets need fill the stack (tree-s6, 256 objects and 7 lights:
+/// 157,840 bytes of RAM without, it runs in 64 KB with).
+#[cfg(feature = "acceleration-tables")]
+pub const HIERARCHY_AHEAD_ABOVE: usize = super::shadow_culling::BlockerSet::CAPACITY;
 
 impl<N: Number, C: Config<Number = N>> Acceleration<C> {
     /// Nothing built, tables for `count` objects (as many as an array holds): [`Acceleration::UNSET`]
@@ -153,6 +182,10 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
             hierarchy_order: C::Hierarchy::filled(if C::HIERARCHY { REFERENCES_PER_OBJECT * count } else { 0 }, C::Index::default()),
             #[cfg(feature = "acceleration-tables")]
             hierarchy_nodes: 0,
+            #[cfg(feature = "acceleration-tables")]
+            hierarchy_ahead: None,
+            #[cfg(feature = "acceleration-tables")]
+            hierarchy_ahead_used: false,
             grid: Grid::inactive(count),
         }
     }
@@ -272,7 +305,9 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
         #[cfg(feature = "acceleration-tables")]
         {
             self.hierarchy_nodes = 0;
-            if C::HIERARCHY && tuning.shadow_culling && optimizations.extents && count > super::shadow_culling::BlockerSet::CAPACITY {
+            let wanted = tuning.shadow_culling && optimizations.extents;
+            self.hierarchy_ahead_used = C::HIERARCHY_AHEAD && wanted && self.hierarchy_ahead.is_some();
+            if C::HIERARCHY && wanted && !self.hierarchy_ahead_used && count > HIERARCHY_ABOVE {
                 self.hierarchy_nodes = build_hierarchy::<C>(count, &of, self.hierarchy.slots_mut(), self.hierarchy_order.slots_mut());
             }
         }
@@ -455,9 +490,20 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
         self.extents.slots().get(object).copied()
     }
 
-    /// The shadow rays' hierarchy, when the scene has one (`Config::HIERARCHY`).
+    /// Holds a hierarchy built ahead ([`hierarchy_ahead`]; the firmware's, in flash) for the
+    /// rebuilds from now on, which use it where they would build one.
+    #[cfg(feature = "acceleration-tables")]
+    pub fn hold_hierarchy_ahead(&mut self, hierarchy: Option<Bvh<'static, N, C::Index>>) {
+        self.hierarchy_ahead = hierarchy.filter(|hierarchy| C::HIERARCHY_AHEAD && !hierarchy.nodes.is_empty());
+    }
+
+    /// The shadow and secondary rays' hierarchy, when the scene has one (`Config::HIERARCHY`,
+    /// or one held ahead).
     #[cfg(feature = "acceleration-tables")]
     pub fn hierarchy(&self) -> Option<Bvh<'_, N, C::Index>> {
+        if C::HIERARCHY_AHEAD && self.hierarchy_ahead_used {
+            return self.hierarchy_ahead;
+        }
         let nodes = self.hierarchy.slots().get(..self.hierarchy_nodes).filter(|nodes| !nodes.is_empty())?;
         Some(Bvh { nodes, order: self.hierarchy_order.slots() })
     }
@@ -475,10 +521,61 @@ fn build_hierarchy<C: Config>(
     order: &mut [C::Index],
 ) -> usize {
     let mut boxes = C::Hierarchy::<super::bvh::WorldBox>::filled(count, ([0.0; 3], [0.0; 3]));
-    let mut triangles = C::Hierarchy::<Option<[[f64; 3]; 3]>>::filled(count, None);
-    let (Some(boxes), Some(triangles)) = (boxes.slots_mut().get_mut(..count), triangles.slots_mut().get_mut(..count)) else { return 0 };
+    let mut triangles = C::Hierarchy::<Option<Triangle>>::filled(count, None);
+    // As many references as the storage holds beyond the objects (`REFERENCES_PER_OBJECT`).
+    let capacity = order.len().min(nodes.len());
+    let mut references = C::Hierarchy::<super::bvh::WorldBox>::filled(capacity, ([0.0; 3], [0.0; 3]));
+    let mut owners = C::Hierarchy::<usize>::filled(capacity, 0);
+    let scratch = HierarchyScratch { boxes: boxes.slots_mut(), triangles: triangles.slots_mut(), references: references.slots_mut(), owners: owners.slots_mut() };
+    build_hierarchy_in(count, &|index| of(index).and_then(|(_, geometry)| geometry), scratch, nodes, order)
+}
+
+/// A triangle's corners in world space (`early_split` cuts its box along them).
+#[cfg(feature = "acceleration-tables")]
+type Triangle = [[f64; 3]; 3];
+
+/// The hierarchy's working tables while it is built, in the caller's storage: a box and a
+/// triangle per object, and a box and an owner per reference (as many as the nodes).
+#[cfg(feature = "acceleration-tables")]
+#[derive(Debug)]
+pub struct HierarchyScratch<'a> {
+    pub boxes: &'a mut [super::bvh::WorldBox],
+    pub triangles: &'a mut [Option<Triangle>],
+    pub references: &'a mut [super::bvh::WorldBox],
+    pub owners: &'a mut [usize],
+}
+
+/// The hierarchy a firmware's scene of `objects` gets (none for [`HIERARCHY_AHEAD_ABOVE`]
+/// objects or fewer),
+/// built from the geometry the tracer renders in `N`, as a host's preparation builds it: what
+/// the firmware's build script writes ahead into flash (the chip has no `f64` to build one).
+/// `nodes` and `order` as long as the references (twice the objects); returns the nodes used.
+#[cfg(feature = "acceleration-tables")]
+pub fn hierarchy_ahead<N: Number, I: Index>(objects: &[ObjectDescription], scratch: HierarchyScratch<'_>, nodes: &mut [BvhNode<N>], order: &mut [I]) -> usize {
+    if objects.len() <= HIERARCHY_AHEAD_ABOVE {
+        return 0;
+    }
+    build_hierarchy_in(objects.len(), &|index| objects.get(index).and_then(rendered_geometry::<N>), scratch, nodes, order)
+}
+
+/// The references a hierarchy of `objects` objects may take (its nodes and its order).
+#[cfg(feature = "acceleration-tables")]
+pub const fn hierarchy_references(objects: usize) -> usize {
+    REFERENCES_PER_OBJECT * objects
+}
+
+#[cfg(feature = "acceleration-tables")]
+fn build_hierarchy_in<N: Number, I: Index>(
+    count: usize,
+    geometry_of: &impl Fn(usize) -> Option<ObjectGeometry>,
+    scratch: HierarchyScratch<'_>,
+    nodes: &mut [BvhNode<N>],
+    order: &mut [I],
+) -> usize {
+    let HierarchyScratch { boxes, triangles, references, owners } = scratch;
+    let (Some(boxes), Some(triangles)) = (boxes.get_mut(..count), triangles.get_mut(..count)) else { return 0 };
     for (index, (slot, triangle)) in boxes.iter_mut().zip(triangles.iter_mut()).enumerate() {
-        let Some((_, Some(geometry))) = of(index) else { return 0 };
+        let Some(geometry) = geometry_of(index) else { return 0 };
         let (low, high) = geometry.world_box();
         if !(low.iter().chain(&high).all(|c| c.is_finite())) {
             return 0;
@@ -486,12 +583,10 @@ fn build_hierarchy<C: Config>(
         *slot = (low, high);
         *triangle = geometry.triangle();
     }
-    // As many references as the storage holds beyond the objects (`REFERENCES_PER_OBJECT`).
-    let capacity = order.len().min(nodes.len());
-    let mut references = C::Hierarchy::<super::bvh::WorldBox>::filled(capacity, ([0.0; 3], [0.0; 3]));
-    let mut owners = C::Hierarchy::<usize>::filled(capacity, 0);
-    let used = super::early_split::split(count, &|index| boxes.get(index).copied().unwrap_or_default(), &|index| triangles.get(index).copied().flatten(), references.slots_mut(), owners.slots_mut());
-    let (Some(references), owners) = (references.slots().get(..used), owners.slots()) else { return 0 };
+    let capacity = order.len().min(nodes.len()).min(references.len()).min(owners.len());
+    let (references, owners) = (&mut references[..capacity], &mut owners[..capacity]);
+    let used = super::early_split::split(count, &|index| boxes.get(index).copied().unwrap_or_default(), &|index| triangles.get(index).copied().flatten(), references, owners);
+    let Some(references) = references.get(..used) else { return 0 };
     super::bvh::build(references, |reference| owners.get(reference).copied().unwrap_or(0), nodes, order)
 }
 

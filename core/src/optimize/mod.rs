@@ -27,4 +27,7 @@ pub mod space_grid;
 pub mod sortlist;
 
 pub use acceleration::{window_corners, Acceleration, ObjectBounds, Tuning};
+#[cfg(feature = "acceleration-tables")]
+pub use acceleration::{hierarchy_ahead, hierarchy_references, HierarchyScratch, HIERARCHY_AHEAD_ABOVE};
+pub use acceleration::HIERARCHY_ABOVE;
 pub use build_options::{SILHOUETTES, TABLES};

@@ -207,9 +207,11 @@ fn transmitted<N: Number, C: Config<Number = N>>(
             return N::ZERO;
         }
         if !overflow {
-            blockers.sort_unstable();
-            let mut share = N::ONE;
-            for index in blockers {
+            // In object order, each time the least above the last (a slice's sort links a
+            // panic path on the chip; the list is short).
+            let (mut share, mut last) = (N::ONE, None);
+            while let Some(index) = blockers.iter().copied().filter(|index| last.is_none_or(|last| *index > last)).min() {
+                last = Some(index);
                 share = share * scene.transmit(index);
                 if share == N::ZERO {
                     break;

@@ -12,6 +12,8 @@ use crate::geometry::Vector3;
 use crate::number::Number;
 use crate::optimize::bounding_sphere::BoundingSphere;
 use crate::optimize::ObjectBounds;
+#[cfg(feature = "acceleration-tables")]
+use crate::optimize::bvh::Bvh;
 use crate::model::{SceneError, SceneErrorKind};
 use crate::model::{Optimizations, Primitive};
 use crate::light::{PreparedLight, PreparedLightSource};
@@ -22,9 +24,10 @@ use crate::scene::{Optics, Prepared, PreparedAntialias};
 use crate::model::Palette;
 use crate::shading::ShadingConstants;
 
-/// The parts of a scene prepared ahead, as the firmware keeps them in flash.
+/// The parts of a scene prepared ahead, as the firmware keeps them in flash (`I`: its tables'
+/// index type).
 #[derive(Debug)]
-pub struct PreparedAhead<'a, N> {
+pub struct PreparedAhead<'a, N, I = u16> {
     pub camera: Camera<N>,
     pub light: PreparedLight<N>,
     pub light_intensity: N,
@@ -43,13 +46,19 @@ pub struct PreparedAhead<'a, N> {
     pub optimizations: Optimizations,
     pub palette: &'a Palette,
     pub bounds: &'a [ObjectBounds<N>],
+    /// The shadow and secondary rays' hierarchy of boxes, for a scene of many objects
+    /// ([`crate::optimize::hierarchy_ahead`]).
+    #[cfg(feature = "acceleration-tables")]
+    pub hierarchy: Option<Bvh<'a, N, I>>,
+    #[cfg(not(feature = "acceleration-tables"))]
+    pub hierarchy: Option<core::marker::PhantomData<&'a I>>,
 }
 
 impl<N: Number, C: Config<Number = N>> Prepared<C> {
     /// Prepares the scene in place from parts made ahead: copies them, puts the eye into the
     /// space of each of the scene's objects (already prepared ahead too) and builds the acceleration structures from the bounds (per frame: the
     /// work that depends on the view and the light).
-    pub fn prepare_ahead(&mut self, parts: &PreparedAhead<'_, N>) -> Result<(), SceneError> {
+    pub fn prepare_ahead(&mut self, parts: &PreparedAhead<'static, N, C::Index>) -> Result<(), SceneError> {
         let too_many = |capacity| SceneError { line: 0, kind: SceneErrorKind::TooManyObjects { capacity } };
         self.camera = parts.camera;
         self.light = parts.light;
@@ -86,15 +95,17 @@ impl<N: Number, C: Config<Number = N>> Prepared<C> {
             return Err(too_many(C::MAX_OBJECTS));
         }
         self.place_eyes();
+        #[cfg(feature = "acceleration-tables")]
+        self.acceleration.hold_hierarchy_ahead(parts.hierarchy);
         self.acceleration.rebuild_from_bounds(&self.camera, self.optimizations, parts.bounds);
         Ok(())
     }
 }
 
 /// Writes the Rust source of `scene`'s parts prepared ahead: `OBJECTS_AHEAD`, `BOUNDS_AHEAD`,
-/// `PALETTE_AHEAD` and `AHEAD` (a [`PreparedAhead`]), the number type named `Number` where it
-/// is written (every value bit for bit, by [`Number::write_literal`]).
-pub fn write_prepared_ahead<N: Number, C: Config<Number = N>>(scene: &Prepared<C>, bounds: &[ObjectBounds<N>], out: &mut dyn Write) -> fmt::Result {
+/// `PALETTE_AHEAD`, `HIERARCHY_AHEAD` and `AHEAD` (a [`PreparedAhead`]), the number type named
+/// `Number` where it is written (every value bit for bit, by [`Number::write_literal`]).
+pub fn write_prepared_ahead<N: Number, C: Config<Number = N>>(scene: &Prepared<C>, bounds: &[ObjectBounds<N>], hierarchy: Hierarchy<'_, N>, out: &mut dyn Write) -> fmt::Result {
     let count = scene.objects.len();
     writeln!(out, "pub static OBJECTS_AHEAD: [microtrace::model::Object<Number>; {count}] = [")?;
     for object in scene.objects.iter() {
@@ -154,6 +165,7 @@ pub fn write_prepared_ahead<N: Number, C: Config<Number = N>>(scene: &Prepared<C
         write!(out, "microtrace::model::Rgb4 {{ r: {}, g: {}, b: {} }}, ", entry.r, entry.g, entry.b)?;
     }
     writeln!(out, "] }};")?;
+    let hierarchy = if write_hierarchy(hierarchy, out)? { "Some(HIERARCHY_AHEAD)" } else { "None" };
     let camera = &scene.camera;
     let (origin, spacing, view_plane) = camera.sampling();
     let v = camera.viewport;
@@ -213,7 +225,36 @@ pub fn write_prepared_ahead<N: Number, C: Config<Number = N>>(scene: &Prepared<C
         " }},\n    background: {},\n    shadows: {},\n    dither: {},\n    optimizations: microtrace::model::Optimizations {{ pixelbuffer: {}, extents: {}, grid: {}, sortlist: {} }},",
         scene.background, scene.shadows, scene.dither, o.pixelbuffer, o.extents, o.grid, o.sortlist
     )?;
-    writeln!(out, "    palette: &PALETTE_AHEAD,\n    bounds: &BOUNDS_AHEAD,\n}};")
+    writeln!(out, "    palette: &PALETTE_AHEAD,\n    bounds: &BOUNDS_AHEAD,\n    hierarchy: {hierarchy},\n}};")
+}
+
+/// A hierarchy made ahead: its nodes and its leaves' objects (the firmware's index, `u16`).
+#[cfg(feature = "acceleration-tables")]
+pub type Hierarchy<'a, N> = Option<Bvh<'a, N, u16>>;
+#[cfg(not(feature = "acceleration-tables"))]
+pub type Hierarchy<'a, N> = Option<core::marker::PhantomData<&'a N>>;
+
+/// `HIERARCHY_AHEAD` and its tables, if there is a hierarchy; whether there is.
+#[cfg(feature = "acceleration-tables")]
+fn write_hierarchy<N: Number>(hierarchy: Hierarchy<'_, N>, out: &mut dyn Write) -> Result<bool, fmt::Error> {
+    let Some(hierarchy) = hierarchy else { return Ok(false) };
+    writeln!(out, "pub static HIERARCHY_NODES_AHEAD: [microtrace::optimize::bvh::BvhNode<Number>; {}] = [", hierarchy.nodes.len())?;
+    for node in hierarchy.nodes {
+        write!(out, "    microtrace::optimize::bvh::BvhNode {{ low: ")?;
+        numbers(out, &node.low)?;
+        write!(out, ", high: ")?;
+        numbers(out, &node.high)?;
+        writeln!(out, ", first: {}, count: {} }},", node.first, node.count)?;
+    }
+    writeln!(out, "];")?;
+    writeln!(out, "pub static HIERARCHY_ORDER_AHEAD: [u16; {}] = {:?};", hierarchy.order.len(), hierarchy.order)?;
+    writeln!(out, "pub const HIERARCHY_AHEAD: microtrace::optimize::bvh::Bvh<'static, Number, u16> = microtrace::optimize::bvh::Bvh {{ nodes: &HIERARCHY_NODES_AHEAD, order: &HIERARCHY_ORDER_AHEAD }};")?;
+    Ok(true)
+}
+
+#[cfg(not(feature = "acceleration-tables"))]
+fn write_hierarchy<N: Number>(_hierarchy: Hierarchy<'_, N>, _out: &mut dyn Write) -> Result<bool, fmt::Error> {
+    Ok(false)
 }
 
 /// `MORE_LIGHTS_AHEAD`, and `OPTICS_AHEAD` and `SPHERES_AHEAD` (the ray tree's, empty without it).
