@@ -15,9 +15,10 @@ use microtrace::model::Palette;
 #[cfg(not(any(feature = "framebuffer", feature = "progressive")))]
 use crate::semihosting::HostFile;
 
-/// A display that shows whole rows: the row's grey levels (0..15), left to right.
+/// A display that shows whole rows: the row's palette indices, left to right, which it maps
+/// through the scene's look-up table to what it can show (16 greys, or dots).
 pub trait RowDisplay {
-    fn show_row(&mut self, y: u16, levels: impl Iterator<Item = u8>);
+    fn show_row(&mut self, y: u16, indices: &[u8], palette: &Palette);
 }
 
 /// The display type of a board without one.
@@ -25,12 +26,13 @@ pub trait RowDisplay {
 pub struct NoDisplay;
 
 impl RowDisplay for NoDisplay {
-    fn show_row(&mut self, _y: u16, _levels: impl Iterator<Item = u8>) {}
+    fn show_row(&mut self, _y: u16, _indices: &[u8], _palette: &Palette) {}
 }
 
-/// The grey levels of a row of palette indices (the core's `grey_level`, the LUT entry's
-/// luminance), worked out once for each run of equal indices.
-fn levels<'a>(palette: &'a Palette, indices: &'a [u8]) -> impl Iterator<Item = u8> + 'a {
+/// The grey levels (0..15) of a row of palette indices (the core's `grey_level`, the LUT
+/// entry's luminance), worked out once for each run of equal indices.
+#[cfg_attr(not(feature = "lm3s6965evb"), allow(dead_code))]
+pub fn levels<'a>(palette: &'a Palette, indices: &'a [u8]) -> impl Iterator<Item = u8> + 'a {
     let mut last: Option<(u8, u8)> = None;
     indices.iter().map(move |&index| match last {
         Some((seen, level)) if seen == index => level,
@@ -93,7 +95,7 @@ impl<D: RowDisplay, const WIDTH: usize> PixelSink<u8> for StreamedRows<'_, D, WI
             self.failed_writes = self.failed_writes.saturating_add(1);
         }
         if let Some(display) = &mut self.display {
-            display.show_row(y, levels(self.palette, &self.row));
+            display.show_row(y, &self.row, self.palette);
         }
     }
 }
@@ -132,7 +134,7 @@ impl<D: RowDisplay> PixelSink<u8> for FramebufferAndDisplay<'_, D> {
         let width = usize::from(self.framebuffer.width());
         let start = usize::from(y) * width;
         if let Some(row) = self.framebuffer.pixels().get(start..start + width) {
-            display.show_row(y, levels(self.palette, row));
+            display.show_row(y, row, self.palette);
         }
     }
 }

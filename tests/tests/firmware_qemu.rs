@@ -408,6 +408,79 @@ fn snooker_fits_the_lm3s811evb() {
     assert!(flash <= 64 * 1024, "snooker on the lm3s811evb: {flash} bytes of flash exceed its 65,536");
 }
 
+/// The smallest board's own display (issue 25, target 1): snooker rendered at the panel's 96x16
+/// on the lm3s811evb, streamed to the host as the host renders it, and shown on its SSD0303 OLED
+/// (I2C) as the dots the host's error diffusion makes of the same picture (each entry's luma,
+/// Floyd–Steinberg, one row of errors: the 1-bit path of `microtrace render --display ssd1306`),
+/// read back from QEMU's screen; all within its 8 KB of RAM.
+#[test]
+fn snooker_shows_on_the_lm3s811evb_oled() {
+    let size = xtask::firmware::LM3S811EVB_OLED;
+    let path = scene_path("snooker.mts");
+    let text = std::fs::read(&path).unwrap();
+    let parsed: Result<SceneDescription<CAPACITY>, _> = microtrace::parser::parse_file("snooker.mts", &text);
+    let mut description = parsed.unwrap();
+    description.fit_to_size(size.0, size.1);
+    let scene = Scene::<f32, CAPACITY>::prepare(&description).unwrap();
+    let mut expected = vec![0u8; usize::from(size.0) * usize::from(size.1)];
+    let mut frame = FrameBuffer::new(&mut expected, size.0, size.1).unwrap();
+    render(&scene, Pga, Whole, &mut frame, &mut Statistics::default());
+    let dots = one_bit_dots(&expected, size, &description.palette);
+
+    let out = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("firmware").join("lm3s811evb-snooker-96x16-f32");
+    let mut options = FirmwareOptions::new(path, Board::Lm3s811evb, "f32", out);
+    options.size = size;
+    let run = firmware::run(&options).unwrap_or_else(|error| panic!("snooker at 96x16 on the lm3s811evb: {error}"));
+    println!("{}", firmware::summary(&run, &options));
+    assert_eq!(std::fs::read(&run.framebuffer).unwrap(), expected, "snooker at 96x16 on the lm3s811evb: the framebuffer differs from the host render");
+    let oled = xtask::oled::read_png(run.oled_png.as_ref().expect("the lm3s811evb's OLED was not captured")).unwrap();
+    assert_eq!((oled.width, oled.height), (usize::from(size.0), usize::from(size.1)));
+    let shown: Vec<bool> = oled.pixels.iter().map(|grey| *grey == 255).collect();
+    assert!(oled.pixels.iter().all(|grey| *grey == 0 || *grey == 255), "the OLED shows only black and white dots");
+    let differing = shown.iter().zip(&dots).filter(|(a, b)| a != b).count();
+    assert_eq!(differing, 0, "{differing} of the OLED's dots differ from the host's error diffusion");
+    assert!(dots.iter().any(|dot| *dot) && dots.iter().any(|dot| !*dot), "a picture of dots, not a blank screen");
+    linked_code_is_clean("snooker at 96x16", Board::Lm3s811evb, &run.numbers);
+    let (ram, stack) = (run.numbers["static_ram_bytes"], run.numbers["stack_peak_bytes"]);
+    assert!(ram + stack <= 8 * 1024, "snooker at 96x16 with the OLED: {ram} bytes of static RAM and {stack} of peak stack exceed 8,192");
+}
+
+/// The dots of the core's error diffusion over each palette entry's luma, row by row as the
+/// streamed render sends them to a 1-bit display.
+fn one_bit_dots(indices: &[u8], (width, height): (u16, u16), palette: &microtrace::model::Palette) -> Vec<bool> {
+    use embedded_graphics::pixelcolor::BinaryColor;
+    use embedded_graphics::prelude::{DrawTarget, OriginDimensions, Point, Size};
+    use embedded_graphics::primitives::Rectangle;
+    use microtrace::pixel::{ColourMap, ErrorDiffusion, LutLuma};
+
+    struct Dots {
+        size: (u16, u16),
+        lit: Vec<bool>,
+    }
+    impl OriginDimensions for Dots {
+        fn size(&self) -> Size {
+            Size::new(u32::from(self.size.0), u32::from(self.size.1))
+        }
+    }
+    impl DrawTarget for Dots {
+        type Color = BinaryColor;
+        type Error = core::convert::Infallible;
+        fn draw_iter<I: IntoIterator<Item = embedded_graphics::Pixel<BinaryColor>>>(&mut self, pixels: I) -> Result<(), Self::Error> {
+            for embedded_graphics::Pixel(point, colour) in pixels {
+                self.lit[point.y as usize * usize::from(self.size.0) + point.x as usize] = colour.is_on();
+            }
+            Ok(())
+        }
+    }
+    let luma = LutLuma::new(palette);
+    let mut diffusion = ErrorDiffusion::<_, 96>::new(Dots { size: (width, height), lit: vec![false; indices.len()] });
+    for (y, row) in indices.chunks(usize::from(width)).enumerate() {
+        let area = Rectangle::new(Point::new(0, y as i32), Size::new(u32::from(width), 1));
+        diffusion.fill_contiguous(&area, row.iter().map(|index| luma.colour(*index))).unwrap();
+    }
+    diffusion.into_inner().lit
+}
+
 #[test]
 fn snooker_in_fixed_point_on_microbit_matches_the_host() {
     firmware_matches_host_in::<microtrace::number::Fixed>("snooker.mts", Board::Microbit);

@@ -69,8 +69,15 @@ impl Board {
         }
     }
 
-    pub fn has_display(self) -> bool {
-        matches!(self, Board::Lm3s6965evb)
+    /// Whether a render of `size` is shown on the board's display (and so captured): the
+    /// lm3s6965evb's 128x64 OLED shows any; the lm3s811evb drives its 96x16 one only for a
+    /// render of that size (firmware/src/board/lm3s811evb/mod.rs).
+    pub fn shows(self, size: (u16, u16)) -> bool {
+        match self {
+            Board::Lm3s6965evb => true,
+            Board::Lm3s811evb => size == LM3S811EVB_OLED,
+            _ => false,
+        }
     }
 }
 
@@ -147,6 +154,9 @@ pub struct FirmwareOptions {
     /// The stack the build's RAM check keeps free (`MICROTRACE_STACK_RESERVE`; firmware/src/ram.rs),
     /// when not its default of 12 KB.
     pub stack_reserve: Option<u32>,
+    /// The render's size (`MICROTRACE_SIZE`): [`FIRMWARE_SIZE`] unless a display of another
+    /// size is the target (the lm3s811evb's 96x16 OLED).
+    pub size: (u16, u16),
 }
 
 impl FirmwareOptions {
@@ -163,6 +173,7 @@ impl FirmwareOptions {
             timeout: Duration::from_secs(300),
             provoke: None,
             stack_reserve: None,
+            size: FIRMWARE_SIZE,
         }
     }
 }
@@ -196,6 +207,9 @@ pub const FIRMWARE_SCENE_CAPACITY: usize = 512;
 
 /// The firmware's render size (`MICROTRACE_SIZE`): the OLED's.
 pub const FIRMWARE_SIZE: (u16, u16) = (128, 64);
+
+/// The lm3s811evb's OLED: an SSD0303's 96x16 panel.
+pub const LM3S811EVB_OLED: (u16, u16) = (96, 16);
 
 /// The number types firmware/build.rs knows.
 pub const NUMBERS: [&str; NumberKind::ALL.len()] = {
@@ -307,7 +321,7 @@ pub fn run(options: &FirmwareOptions) -> Result<FirmwareRun, String> {
     let _ = std::fs::remove_file(&instructions_path);
 
     let framebuffer = out.join("framebuffer.bin");
-    let oled_png = options.board.has_display().then(|| out.join("oled.png"));
+    let oled_png = options.board.shows(options.size).then(|| out.join("oled.png"));
     Ok(FirmwareRun { elf: elf_path, framebuffer, oled_png, report_json, linked_audit_txt, audit, flash_areas, numbers: integers })
 }
 
@@ -400,7 +414,7 @@ fn build(options: &FirmwareOptions, scene: &Path, primitive_features: &[&str]) -
     // The grid's pool sized by what the scene's grid holds at the firmware's size (a scene that
     // does not parse is left to the build script, which says why).
     let grid_entries = match parse_scene(scene) {
-        Ok(description) => crate::grid_pool::entries_per_object(&description, &options.number, &options.optimizations, FIRMWARE_SIZE)?.to_string(),
+        Ok(description) => crate::grid_pool::entries_per_object(&description, &options.number, &options.optimizations, options.size)?.to_string(),
         Err(_) => String::new(),
     };
     let output = Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
@@ -418,7 +432,7 @@ fn build(options: &FirmwareOptions, scene: &Path, primitive_features: &[&str]) -
         .env("MICROTRACE_SCENE", scene)
         .env("MICROTRACE_NUMBER", &options.number)
         .env("MICROTRACE_OPT", &options.optimizations)
-        .env("MICROTRACE_SIZE", format!("{}x{}", FIRMWARE_SIZE.0, FIRMWARE_SIZE.1))
+        .env("MICROTRACE_SIZE", format!("{}x{}", options.size.0, options.size.1))
         .env("MICROTRACE_GRID_ENTRIES_PER_OBJECT", grid_entries)
         .env("MICROTRACE_FAULT_TEST", if options.provoke.is_some() { "1" } else { "0" })
         .env("MICROTRACE_STACK_RESERVE", options.stack_reserve.map(|bytes| bytes.to_string()).unwrap_or_default())
@@ -452,7 +466,7 @@ fn build_failure(stderr: &str) -> Option<String> {
 
 fn run_qemu(options: &FirmwareOptions, elf: &Path, out: &Path, plugin_arguments: &str) -> Result<(), String> {
     let machine = options.board.machine();
-    if !options.board.has_display() {
+    if !options.board.shows(options.size) {
         let mut run = QemuRun::start(machine, elf, out, plugin_arguments, None, options.timeout)?;
         let status = run.wait()?;
         if !status.success() {
@@ -462,7 +476,7 @@ fn run_qemu(options: &FirmwareOptions, elf: &Path, out: &Path, plugin_arguments:
     }
 
     // With a display: the firmware holds its picture until we have taken the screendump
-    // (board/lm3s6965evb/mod.rs); a socket path must be short, so it lives in the temp dir.
+    // (board/stellaris.rs); a socket path must be short, so it lives in the temp dir.
     touch(&out.join("screendump.wanted"))?;
     let socket = std::env::temp_dir().join(format!("microtrace-monitor-{}-{}.sock", std::process::id(), unique()));
     let _ = std::fs::remove_file(&socket);

@@ -10,7 +10,7 @@ fn usage() -> &'static str {
     "usage:
   cargo xtask firmware [--scene FILE] [--board lm3s6965evb|mps2-an386|microbit|mps2-an505|lm3s811evb] [--number f64|f32|fixed|fixed16|f32-micromath|soft32]
                        [--opt scene|all|none|pixelbuffer,extents,grid,sortlist] [--out DIR]
-                       [--timeout SECONDS] [--stack-reserve BYTES] [--progressive] [--framebuffer]
+                       [--timeout SECONDS] [--stack-reserve BYTES] [--size WxH] [--progressive] [--framebuffer]
                        [--provoke panic|hard-fault|unexpected-interrupt|stack-overflow]
       Builds the firmware for the scene (default scenes/snooker.mts), runs it under QEMU and
       leaves framebuffer.bin, oled.png (lm3s6965evb) and report.json in DIR
@@ -20,6 +20,7 @@ fn usage() -> &'static str {
                        render's shadow tables per object (with a hierarchy in flash,
                        preparation's tables), at least 12288; on the 8 KB
                        lm3s811evb 1.5 KB plus the tables, at least 3072; firmware/src/ram.rs).
+      --size: the render's size (default 128x64; the lm3s811evb's OLED is 96x16).
       --progressive renders coarse to fine (8x8 blocks, then 4x4, 2x2, every pixel): the same
       image, the rays of each pass reported. --framebuffer builds the framebuffer render (the
       picture in an 8 KB RAM framebuffer) instead of the streamed one (rows sent as they are done).
@@ -98,6 +99,7 @@ fn firmware_task(arguments: &[String]) -> Result<(), String> {
     let mut stack_reserve = None;
     let mut progressive = false;
     let mut framebuffer = false;
+    let mut size = None;
     let mut rest = arguments.iter();
     while let Some(flag) = rest.next() {
         let mut value = || rest.next().cloned().ok_or_else(|| format!("{flag} needs a value\n{}", usage()));
@@ -115,6 +117,11 @@ fn firmware_task(arguments: &[String]) -> Result<(), String> {
             "--timeout" => {
                 let seconds = value()?;
                 timeout = Duration::from_secs(seconds.parse().map_err(|_| format!("--timeout {seconds}: not a number of seconds"))?);
+            }
+            "--size" => {
+                let text = value()?;
+                let parsed = text.split_once('x').and_then(|(width, height)| Some((width.parse::<u16>().ok()?, height.parse::<u16>().ok()?)));
+                size = Some(parsed.filter(|(width, height)| *width > 0 && *height > 0).ok_or_else(|| format!("--size {text}: expected WIDTHxHEIGHT, e.g. 96x16"))?);
             }
             "--stack-reserve" => {
                 let bytes = value()?;
@@ -142,6 +149,7 @@ fn firmware_task(arguments: &[String]) -> Result<(), String> {
     options.stack_reserve = stack_reserve;
     options.progressive = progressive;
     options.framebuffer = framebuffer;
+    options.size = size.unwrap_or(options.size);
     let run = firmware::run(&options)?;
     println!("{}", firmware::summary(&run, &options));
     Ok(())

@@ -7,7 +7,7 @@
 //! build.rs checks that exactly one is enabled.
 
 /// What a board without a display it drives provides: no display, nothing to capture.
-#[cfg(not(feature = "lm3s6965evb"))]
+#[cfg(not(any(feature = "lm3s6965evb", feature = "lm3s811evb")))]
 mod headless {
     /// The type is there so the shared code has one to name.
     pub type Display = crate::display::NoDisplay;
@@ -21,6 +21,9 @@ mod headless {
         true
     }
 }
+
+#[cfg(any(feature = "lm3s6965evb", feature = "lm3s811evb"))]
+mod stellaris;
 
 #[cfg(feature = "lm3s6965evb")]
 mod lm3s6965evb;

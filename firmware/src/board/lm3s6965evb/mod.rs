@@ -7,8 +7,6 @@ mod ssd0323;
 
 pub use ssd0323::Ssd0323;
 
-use crate::semihosting;
-
 /// The display the render shows its rows on: the SSD0323 driver over this board's SSI0 (an
 /// `embedded-hal` `SpiBus`) with the OLED's select line PD0 (a `SpiDevice`), and PC7 as its
 /// data/command `OutputPin`.
@@ -20,30 +18,7 @@ pub fn init() -> Option<Display> {
     Ssd0323::new(device, spi::oled_data_command()).ok()
 }
 
-/// Files that `cargo xtask firmware` uses to capture the screen before the firmware exits
-/// (the picture disappears with QEMU): xtask creates the first before starting QEMU, and the
-/// second once its monitor `screendump` has finished.
-const CAPTURE_WANTED: &[u8] = b"screendump.wanted\0";
-const CAPTURE_DONE: &[u8] = b"screendump.done\0";
-/// How often to look for `CAPTURE_DONE` before giving up (each look is a semihosting call and a
-/// short spin; xtask's timeout bounds the whole run anyway).
-const CAPTURE_POLLS: u32 = 2_000_000;
-
-/// Keeps the picture on the screen until the host has captured it, when a host asked for that.
-pub fn hold_picture_for_capture() -> bool {
-    if !semihosting::host_file_exists(CAPTURE_WANTED) {
-        return true;
-    }
-    semihosting::print("microtrace: waiting for screendump\n");
-    for _ in 0..CAPTURE_POLLS {
-        if semihosting::host_file_exists(CAPTURE_DONE) {
-            return true;
-        }
-        cortex_m::asm::delay(10_000);
-    }
-    semihosting::print("microtrace: no screendump came\n");
-    false
-}
+pub use super::stellaris::hold_picture_for_capture;
 
 /// The peripherals the firmware touches (SSI0, GPIO C and D, system control) lie in the first
 /// megabyte of the peripheral region: the MPU's region for them (src/fault.rs).

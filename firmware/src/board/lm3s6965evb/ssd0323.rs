@@ -10,6 +10,7 @@ use embedded_hal::digital::OutputPin;
 use embedded_hal::spi::SpiDevice;
 
 use crate::display::RowDisplay;
+use microtrace::model::Palette;
 
 pub const WIDTH: usize = 128;
 pub const HEIGHT: usize = 64;
@@ -96,9 +97,9 @@ fn set_level<DC: OutputPin, S>(line: &mut DC, level: &mut Option<bool>, data: bo
 impl<SPI: SpiDevice<u8>, DC: OutputPin> RowDisplay for Ssd0323<SPI, DC> {
     /// Packs the row's grey levels (0..15, left to right; the first 128) two to a byte and sends
     /// the row; pixels beyond the levels given are black.
-    fn show_row(&mut self, y: u16, levels: impl Iterator<Item = u8>) {
+    fn show_row(&mut self, y: u16, indices: &[u8], palette: &Palette) {
         let mut row = [0u8; BYTES_PER_ROW];
-        for (x, level) in levels.take(WIDTH).enumerate() {
+        for (x, level) in crate::display::levels(palette, indices).take(WIDTH).enumerate() {
             if let Some(byte) = row.get_mut(x / 2) {
                 *byte |= if x % 2 == 0 { (level & 0x0F) << 4 } else { level & 0x0F };
             }
