@@ -124,7 +124,7 @@ fn size_only(scene_path: &Path, text: &[u8], (width, height): (u16, u16), (numbe
     memory.write(&mut source);
     write_stack_reserve(&mut source);
     // As a build that prepares it would: a hierarchy for many objects with Extents on.
-    write_hierarchy_flag(&mut source, description.objects.len() > microtrace::optimize::HIERARCHY_AHEAD_ABOVE && description.optimizations.extents);
+    write_ahead_flags(&mut source, description.objects.len() > microtrace::optimize::HIERARCHY_AHEAD_ABOVE && description.optimizations.extents, false);
     writeln!(source, "/// Sizing only: no object is prepared ahead.").unwrap();
     writeln!(source, "pub static OBJECTS_AHEAD: [microtrace::model::Object<Number>; 0] = [];").unwrap();
     writeln!(source, "pub static SOLID_NODES_AHEAD: [microtrace::model::PreparedSolidNode<Number>; 0] = [];").unwrap();
@@ -135,9 +135,18 @@ fn size_only(scene_path: &Path, text: &[u8], (width, height): (u16, u16), (numbe
 }
 
 /// `HIERARCHY_IN_FLASH`: whether the scene's shadow and secondary rays walk a hierarchy kept in
-/// flash (then no shadow tables are built on the stack: src/ram.rs).
-fn write_hierarchy_flag(source: &mut String, hierarchy: bool) {
+/// flash (then no shadow tables are built on the stack: src/ram.rs); `MADE_AHEAD`, what is in
+/// flash as the scene's `Arrays` takes it (the hierarchy, the screen grid); and the grid's
+/// pool entries per object (none with the grid in flash).
+fn write_ahead_flags(source: &mut String, hierarchy: bool, grid: bool) {
     writeln!(source, "/// Whether a hierarchy of boxes made ahead is in flash (src/ram.rs: no shadow tables).\npub const HIERARCHY_IN_FLASH: bool = {hierarchy};").unwrap();
+    let ahead = u8::from(hierarchy) * microtrace::config::AHEAD_HIERARCHY + u8::from(grid) * microtrace::config::AHEAD_GRID;
+    writeln!(source, "/// What is made ahead (`microtrace::config::Arrays`' `AHEAD`).\npub const MADE_AHEAD: u8 = {ahead};").unwrap();
+    // The grid's pool: none when the grid is in flash; else the entries per object the scene's
+    // grid holds at the build's view (xtask counts them, `MICROTRACE_GRID_ENTRIES_PER_OBJECT`),
+    // or the core's default.
+    let grid_entries = if grid { 0 } else { grid_entries_per_object() };
+    writeln!(source, "pub const GRID_ENTRIES_PER_OBJECT: usize = {grid_entries};").unwrap();
 }
 
 fn env(name: &str) -> Option<String> {
@@ -347,9 +356,15 @@ fn ahead<H: microtrace::number::Number>(description: &SceneDescription<PARSE_CAP
     let used = if scene.optimizations.extents { microtrace::optimize::hierarchy_ahead(objects, scratch, &mut nodes, &mut order) } else { 0 };
     let leaves = nodes[..used].iter().filter(|node| node.count > 0).map(|node| (node.first + node.count) as usize).max().unwrap_or(0);
     let hierarchy = (used > 0).then(|| microtrace::optimize::bvh::Bvh { nodes: &nodes[..used], order: &order[..leaves] });
+    // The screen grid the chip would build for the view fixed here, from the same bounds in the
+    // same number type (`rebuild_from_bounds`, as its preparation does): built here and kept in
+    // flash, the chip builds none and keeps no pool in RAM.
+    let (camera, optimizations) = (scene.camera, scene.optimizations);
+    scene.acceleration.rebuild_from_bounds(&camera, optimizations, &bounds);
+    let grid = scene.acceleration.grid_parts().filter(|_| optimizations.grid);
     let mut text = String::new();
-    write_hierarchy_flag(&mut text, used > 0);
-    microtrace::scene::ahead::write_prepared_ahead(&*scene, &bounds, hierarchy, &mut text).map_err(Ahead::Write)?;
+    write_ahead_flags(&mut text, used > 0, grid.is_some());
+    microtrace::scene::ahead::write_prepared_ahead(&*scene, &bounds, hierarchy, grid, &mut text).map_err(Ahead::Write)?;
     out.push_str(&text);
     Ok(())
 }
@@ -458,10 +473,6 @@ fn generate<L: std::ops::Deref<Target = [microtrace::model::ObjectDescription]>>
     // Antialiasing keeps one row of the pixels' corners: the image's width plus one.
     let corner_row = if d.antialias.is_some() { usize::from(d.viewport.width()) + 1 } else { 1 };
     writeln!(out, "pub const ANTIALIAS_ROW: usize = {corner_row};").unwrap();
-    // The grid's pool: the entries per object the scene's grid holds at the build's view
-    // (xtask counts them, `MICROTRACE_GRID_ENTRIES_PER_OBJECT`), else the core's default.
-    let grid_entries = grid_entries_per_object();
-    writeln!(out, "pub const GRID_ENTRIES_PER_OBJECT: usize = {grid_entries};").unwrap();
     // A ray's walk through a solid holds lists of spans (`csg::solid`): exactly as many as the
     // scene's solids need, each need the largest over its solids (none without solids).
     let needs = d

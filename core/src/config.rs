@@ -78,6 +78,10 @@ pub trait Config: 'static {
     /// than 128 objects: `scene::ahead::PreparedAhead::hierarchy`): the code that walks one is
     /// linked only then.
     const HIERARCHY_AHEAD: bool = false;
+    /// Whether the scene comes with its screen grid made ahead for its view (the firmware's, in
+    /// flash: `scene::ahead::PreparedAhead::grid`): preparation then builds none, and the
+    /// grid's pool takes no RAM.
+    const GRID_AHEAD: bool = false;
 
     /// The grid's pool entries for a scene of `objects` objects (a table sized at run time is
     /// made this long; an array keeps its length).
@@ -164,8 +168,8 @@ pub const DEFAULT_ANTIALIAS_ROW: usize = 2049;
 /// Every table an array of a capacity fixed at compile time: `K` objects (kept in `O`),
 /// `POOL` grid entries per object, a ray tree `DEPTH` deep and antialiasing rows of `ROW`
 /// corners, the solids' nodes in `S`, the look-up table in `P`, `OTHER_LIGHTS` lights after the
-/// first, and a hierarchy made ahead if `HIERARCHY_AHEAD` (`Config::HIERARCHY_AHEAD`). The
-/// firmware's scene is one (sized by its scene), and so are the tests'.
+/// first, and the structures made ahead that `AHEAD` names ([`AHEAD_HIERARCHY`], [`AHEAD_GRID`]).
+/// The firmware's scene is one (sized by its scene), and so are the tests'.
 pub struct Arrays<
     N,
     const K: usize,
@@ -176,16 +180,22 @@ pub struct Arrays<
     S = heapless::Vec<PreparedSolidNode<N>, MAX_SOLID_NODES>,
     P = OwnedPalette,
     const OTHER_LIGHTS: usize = { MAX_LIGHTS - 1 },
-    const HIERARCHY_AHEAD: bool = false,
+    const AHEAD: u8 = 0,
 >(PhantomData<(N, O, S, P)>);
 
-impl<N, const K: usize, O, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize, const HIERARCHY_AHEAD: bool> Debug for Arrays<N, K, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS, HIERARCHY_AHEAD> {
+/// [`Arrays`]' `AHEAD`: the shadow and secondary rays' hierarchy made ahead
+/// ([`Config::HIERARCHY_AHEAD`]).
+pub const AHEAD_HIERARCHY: u8 = 1;
+/// [`Arrays`]' `AHEAD`: the screen grid made ahead ([`Config::GRID_AHEAD`]).
+pub const AHEAD_GRID: u8 = 2;
+
+impl<N, const K: usize, O, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize, const AHEAD: u8> Debug for Arrays<N, K, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS, AHEAD> {
     fn fmt(&self, formatter: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         write!(formatter, "Arrays<{K} objects, {POOL} grid entries each, depth {DEPTH}, row {ROW}>")
     }
 }
 
-impl<N, const K: usize, O, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize, const HIERARCHY_AHEAD: bool> Config for Arrays<N, K, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS, HIERARCHY_AHEAD>
+impl<N, const K: usize, O, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize, const AHEAD: u8> Config for Arrays<N, K, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS, AHEAD>
 where
     N: Number + 'static,
     O: Objects<N> + 'static,
@@ -211,7 +221,8 @@ where
     const MAX_OBJECTS: usize = K;
     const GRID_ENTRIES_PER_OBJECT: usize = POOL;
     const TREE_DEPTH: usize = DEPTH;
-    const HIERARCHY_AHEAD: bool = HIERARCHY_AHEAD;
+    const HIERARCHY_AHEAD: bool = AHEAD & AHEAD_HIERARCHY != 0;
+    const GRID_AHEAD: bool = AHEAD & AHEAD_GRID != 0;
 }
 
 /// The space grid's cell entries per object on average at most (else no grid).

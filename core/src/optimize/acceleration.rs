@@ -13,7 +13,7 @@ use crate::model::{ObjectDescription, Optimizations, Primitive};
 use super::bounding_volume::ObjectGeometry;
 use super::capsule::{Capsule, ScreenMap};
 use super::extents::Extent;
-use super::grid::Grid;
+use super::grid::{Grid, GridAhead};
 use super::projection::Screen;
 use super::build_options::SILHOUETTES;
 use super::shadow_culling::ShadowBound;
@@ -75,6 +75,10 @@ pub struct Acceleration<C: Config> {
     #[cfg(feature = "acceleration-tables")]
     hierarchy_ahead_used: bool,
     grid: Grid<C>,
+    /// A grid made ahead for the view (the firmware's, at build time, in flash), used in place
+    /// of `grid` when the optimizations ask for a grid.
+    grid_ahead: Option<GridAhead<'static, C::Number, C::Index>>,
+    grid_ahead_used: bool,
 }
 
 impl<C: Config> core::fmt::Debug for Acceleration<C> {
@@ -107,11 +111,13 @@ impl<C: Config> Clone for Acceleration<C> {
             #[cfg(feature = "acceleration-tables")]
             hierarchy_ahead_used: self.hierarchy_ahead_used,
             grid: self.grid.clone(),
+            grid_ahead: self.grid_ahead,
+            grid_ahead_used: self.grid_ahead_used,
         }
     }
 }
 
-impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize, const HIERARCHY_AHEAD: bool> Acceleration<Arrays<N, K, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS, HIERARCHY_AHEAD>>
+impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize, const AHEAD: u8> Acceleration<Arrays<N, K, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS, AHEAD>>
 where
     S: crate::config::SolidStorage<N> + 'static,
     P: crate::config::PaletteStorage + 'static,
@@ -140,6 +146,8 @@ where
         #[cfg(feature = "acceleration-tables")]
         hierarchy_ahead_used: false,
         grid: Grid::UNSET,
+        grid_ahead: None,
+        grid_ahead_used: false,
     };
 }
 
@@ -187,6 +195,8 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
             #[cfg(feature = "acceleration-tables")]
             hierarchy_ahead_used: false,
             grid: Grid::inactive(count),
+            grid_ahead: None,
+            grid_ahead_used: false,
         }
     }
 
@@ -266,8 +276,10 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
             }
             // A capsule that reaches the eye plane covers the whole screen; its object's f64
             // silhouette clipped at the eye plane (`projection`, B16) does better. Only such
-            // objects take that path (the thesis scenes have none).
-            let reaches_eye = SILHOUETTES && capsules && map.cover(&capsule) == capsule::Covered::Whole && capsule.radius != N::MAX;
+            // objects with their geometry take that path (the thesis scenes have none); from
+            // bounds alone, every build does as the firmware does (so a host builds the chip's
+            // grid exactly: `scene::ahead`).
+            let reaches_eye = SILHOUETTES && geometry.is_some() && capsules && map.cover(&capsule) == capsule::Covered::Whole && capsule.radius != N::MAX;
             // The f64 paths need the geometry: without it (bounds prepared ahead), the whole
             // screen and no depth bound.
             let silhouette = |tight: bool| match &geometry {
@@ -317,7 +329,9 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
                 sortlist::sort_by_bound::<C, _>(order, |i| near.get(i).copied().unwrap_or(-N::MAX));
             }
         }
-        if !optimizations.grid {
+        // A grid made ahead for this view (the firmware's) is used as it is.
+        self.grid_ahead_used = C::GRID_AHEAD && optimizations.grid && self.grid_ahead.is_some();
+        if !optimizations.grid || self.grid_ahead_used {
             self.grid.clear();
             return;
         }
@@ -366,13 +380,33 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
 
     /// Grid: its cells across and down, `None` without a grid.
     pub fn grid_side(&self) -> Option<u16> {
-        self.grid.side()
+        match self.grid_ahead.filter(|_| C::GRID_AHEAD && self.grid_ahead_used) {
+            Some(ahead) => Some(ahead.side),
+            None => self.grid.side(),
+        }
     }
 
     /// Grid: the entries of the pixel's cell and the pixel's offsets in it; `None` without a grid.
     #[inline]
     pub fn grid_cell(&self, pixel: PixelPosition) -> Option<grid::CellAt<'_, C>> {
+        if C::GRID_AHEAD && self.grid_ahead_used {
+            // By reference: a copy of the parts out of the option cost a Cortex-M4F 14
+            // instructions a pixel.
+            return self.grid_ahead.as_ref().map(|ahead| ahead.cell(pixel.column, pixel.row));
+        }
         self.grid.cell(pixel.column, pixel.row)
+    }
+
+    /// Holds a grid made ahead for the view the scene is prepared for (the firmware's, in
+    /// flash), for the rebuilds from now on, which use it when the optimizations ask for a grid.
+    pub fn hold_grid_ahead(&mut self, grid: Option<GridAhead<'static, N, C::Index>>) {
+        self.grid_ahead = grid.filter(|_| C::GRID_AHEAD);
+    }
+
+    /// The grid as built, by its parts (`None`: none active): what the firmware's build writes
+    /// ahead.
+    pub fn grid_parts(&self) -> Option<GridAhead<'_, N, C::Index>> {
+        self.grid.ahead()
     }
 
     /// Every object, in test order (sorted by depth bound with Sortlist).
@@ -462,17 +496,24 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
 
     /// Whether the grid is in use (on, and its pool did not overflow).
     pub fn grid_active(&self) -> bool {
-        self.grid.is_active()
+        self.grid_ahead_used || self.grid.is_active()
     }
 
     /// Entries over all grid cells.
     pub fn grid_entries(&self) -> usize {
-        self.grid.entries()
+        match self.grid_ahead.filter(|_| self.grid_ahead_used) {
+            Some(ahead) => ahead.entries(),
+            None => self.grid.entries(),
+        }
     }
 
-    /// The entries the grid's pool holds ([`Config::GRID_ENTRIES_PER_OBJECT`] per object).
+    /// The entries the grid's pool holds ([`Config::GRID_ENTRIES_PER_OBJECT`] per object; a
+    /// grid made ahead holds exactly its entries).
     pub fn grid_capacity(&self) -> usize {
-        self.grid.capacity()
+        match self.grid_ahead.filter(|_| self.grid_ahead_used) {
+            Some(ahead) => ahead.entries(),
+            None => self.grid.capacity(),
+        }
     }
 
     /// Sortlist's lower bound of `t` for the object, as the render uses it (`None`: none known,

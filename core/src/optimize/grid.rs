@@ -104,7 +104,7 @@ impl<C: Config> Clone for Grid<C> {
     }
 }
 
-impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize, const HIERARCHY_AHEAD: bool> Grid<Arrays<N, K, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS, HIERARCHY_AHEAD>>
+impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize, const AHEAD: u8> Grid<Arrays<N, K, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS, AHEAD>>
 where
     S: crate::config::SolidStorage<N> + 'static,
     P: crate::config::PaletteStorage + 'static,
@@ -375,19 +375,60 @@ impl<N: Number, C: Config<Number = N>> Grid<C> {
     #[inline]
     pub fn cell(&self, column: u16, row: u16) -> Option<CellAt<'_, C>> {
         let CellSize { width, height } = self.cells?;
-        let (cell_column, cell_row) = ((column / width).min(self.side.saturating_sub(1)), (row / height).min(self.side.saturating_sub(1)));
-        let cell = usize::from(cell_row) * usize::from(self.side) + usize::from(cell_column);
-        let starts = self.starts.slots();
-        let (Some(start), Some(end)) = (starts.get(cell), starts.get(cell + 1)) else { return Some((&[], &[], 0, 0)) };
-        let (start, end) = (start.get(), end.get());
-        let dx = (column - cell_column * width.get()).min(255);
-        let dy = (row - cell_row * height.get()).min(255);
-        Some((self.pool.slots().get(start..end).unwrap_or(&[]), self.depth.slots().get(start..end).unwrap_or(&[]), dx, dy))
+        Some(GridAhead { width, height, side: self.side, starts: self.starts.slots(), pool: self.pool.slots(), depth: self.depth.slots() }.cell(column, row))
+    }
+
+    /// The built grid as its parts (`None` when it is not active): what the firmware's build
+    /// writes into flash (`scene::ahead`), and what [`Grid::cell`] reads.
+    #[inline]
+    pub fn ahead(&self) -> Option<GridAhead<'_, N, C::Index>> {
+        let CellSize { width, height } = self.cells?;
+        let cells = usize::from(self.side) * usize::from(self.side);
+        let starts = self.starts.slots().get(..=cells)?;
+        let entries = starts.last()?.get();
+        Some(GridAhead { width, height, side: self.side, starts, pool: self.pool.slots().get(..entries)?, depth: self.depth.slots().get(..entries)? })
     }
 
     /// Total entries over all cells.
     pub fn entries(&self) -> usize {
         self.starts.slots().get(usize::from(self.side) * usize::from(self.side)).map_or(0, |entries| entries.get())
+    }
+}
+
+/// A built grid by its parts, borrowed: the firmware's made at build time for its fixed view
+/// and kept in flash (`Config::GRID_AHEAD`), or a [`Grid`]'s own.
+#[derive(Clone, Copy, Debug)]
+pub struct GridAhead<'a, N, I> {
+    /// A cell's pixels across and down.
+    pub width: NonZeroU16,
+    pub height: NonZeroU16,
+    /// Cells across and down.
+    pub side: u16,
+    /// Each cell's first entry, and the end of the last.
+    pub starts: &'a [I],
+    /// The entries, cell by cell, and each one's depth bound.
+    pub pool: &'a [Entry<I>],
+    pub depth: &'a [N],
+}
+
+impl<'a, N, I: Index> GridAhead<'a, N, I> {
+    /// [`Grid::cell`]: the entries of the cell holding image pixel (column, row), and the
+    /// pixel's offsets from the cell's corner (saturated at 255).
+    #[inline]
+    pub fn cell(&self, column: u16, row: u16) -> (&'a [Entry<I>], &'a [N], u16, u16) {
+        let (width, height) = (self.width.get(), self.height.get());
+        let (cell_column, cell_row) = ((column / width).min(self.side.saturating_sub(1)), (row / height).min(self.side.saturating_sub(1)));
+        let cell = usize::from(cell_row) * usize::from(self.side) + usize::from(cell_column);
+        let (Some(start), Some(end)) = (self.starts.get(cell), self.starts.get(cell + 1)) else { return (&[], &[], 0, 0) };
+        let (start, end) = (start.get(), end.get());
+        let dx = (column - cell_column * width).min(255);
+        let dy = (row - cell_row * height).min(255);
+        (self.pool.get(start..end).unwrap_or(&[]), self.depth.get(start..end).unwrap_or(&[]), dx, dy)
+    }
+
+    /// Its entries.
+    pub fn entries(&self) -> usize {
+        self.pool.len()
     }
 }
 

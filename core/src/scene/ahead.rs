@@ -12,6 +12,7 @@ use crate::geometry::Vector3;
 use crate::number::Number;
 use crate::optimize::bounding_sphere::BoundingSphere;
 use crate::optimize::ObjectBounds;
+use crate::optimize::grid::GridAhead;
 #[cfg(feature = "acceleration-tables")]
 use crate::optimize::bvh::Bvh;
 use crate::model::{SceneError, SceneErrorKind};
@@ -52,6 +53,9 @@ pub struct PreparedAhead<'a, N, I = u16> {
     pub hierarchy: Option<Bvh<'a, N, I>>,
     #[cfg(not(feature = "acceleration-tables"))]
     pub hierarchy: Option<core::marker::PhantomData<&'a I>>,
+    /// The screen grid for the view above ([`crate::optimize::Acceleration::grid_parts`] of
+    /// the scene prepared on the host from the same bounds): preparation builds none.
+    pub grid: Option<GridAhead<'a, N, I>>,
 }
 
 impl<N: Number, C: Config<Number = N>> Prepared<C> {
@@ -97,15 +101,23 @@ impl<N: Number, C: Config<Number = N>> Prepared<C> {
         self.place_eyes();
         #[cfg(feature = "acceleration-tables")]
         self.acceleration.hold_hierarchy_ahead(parts.hierarchy);
+        self.acceleration.hold_grid_ahead(parts.grid);
         self.acceleration.rebuild_from_bounds(&self.camera, self.optimizations, parts.bounds);
         Ok(())
     }
 }
 
 /// Writes the Rust source of `scene`'s parts prepared ahead: `OBJECTS_AHEAD`, `BOUNDS_AHEAD`,
-/// `PALETTE_AHEAD`, `HIERARCHY_AHEAD` and `AHEAD` (a [`PreparedAhead`]), the number type named
-/// `Number` where it is written (every value bit for bit, by [`Number::write_literal`]).
-pub fn write_prepared_ahead<N: Number, C: Config<Number = N>>(scene: &Prepared<C>, bounds: &[ObjectBounds<N>], hierarchy: Hierarchy<'_, N>, out: &mut dyn Write) -> fmt::Result {
+/// `PALETTE_AHEAD`, `HIERARCHY_AHEAD`, `GRID_AHEAD` and `AHEAD` (a [`PreparedAhead`]), the
+/// number type named `Number` where it is written (every value bit for bit, by
+/// [`Number::write_literal`]).
+pub fn write_prepared_ahead<N: Number, C: Config<Number = N>>(
+    scene: &Prepared<C>,
+    bounds: &[ObjectBounds<N>],
+    hierarchy: Hierarchy<'_, N>,
+    grid: Option<GridAhead<'_, N, u16>>,
+    out: &mut dyn Write,
+) -> fmt::Result {
     let count = scene.objects.len();
     writeln!(out, "pub static OBJECTS_AHEAD: [microtrace::model::Object<Number>; {count}] = [")?;
     for object in scene.objects.iter() {
@@ -166,6 +178,7 @@ pub fn write_prepared_ahead<N: Number, C: Config<Number = N>>(scene: &Prepared<C
     }
     writeln!(out, "] }};")?;
     let hierarchy = if write_hierarchy(hierarchy, out)? { "Some(HIERARCHY_AHEAD)" } else { "None" };
+    let grid = if write_grid(grid, out)? { "Some(GRID_AHEAD)" } else { "None" };
     let camera = &scene.camera;
     let (origin, spacing, view_plane) = camera.sampling();
     let v = camera.viewport;
@@ -225,7 +238,28 @@ pub fn write_prepared_ahead<N: Number, C: Config<Number = N>>(scene: &Prepared<C
         " }},\n    background: {},\n    shadows: {},\n    dither: {},\n    optimizations: microtrace::model::Optimizations {{ pixelbuffer: {}, extents: {}, grid: {}, sortlist: {} }},",
         scene.background, scene.shadows, scene.dither, o.pixelbuffer, o.extents, o.grid, o.sortlist
     )?;
-    writeln!(out, "    palette: &PALETTE_AHEAD,\n    bounds: &BOUNDS_AHEAD,\n    hierarchy: {hierarchy},\n}};")
+    writeln!(out, "    palette: &PALETTE_AHEAD,\n    bounds: &BOUNDS_AHEAD,\n    hierarchy: {hierarchy},\n    grid: {grid},\n}};")
+}
+
+/// `GRID_AHEAD` and its tables (the cells' starts, the entries and their depth bounds), if
+/// there is a grid; whether there is.
+fn write_grid<N: Number>(grid: Option<GridAhead<'_, N, u16>>, out: &mut dyn Write) -> Result<bool, fmt::Error> {
+    let Some(grid) = grid else { return Ok(false) };
+    writeln!(out, "pub static GRID_STARTS_AHEAD: [u16; {}] = {:?};", grid.starts.len(), grid.starts)?;
+    writeln!(out, "pub static GRID_POOL_AHEAD: [microtrace::optimize::grid::Entry<u16>; {}] = [", grid.pool.len())?;
+    for entry in grid.pool {
+        writeln!(out, "    microtrace::optimize::grid::Entry {{ object: {}, columns: {}, rows: {} }},", entry.object, entry.columns, entry.rows)?;
+    }
+    writeln!(out, "];")?;
+    write!(out, "pub static GRID_DEPTH_AHEAD: [Number; {}] = ", grid.depth.len())?;
+    numbers(out, grid.depth)?;
+    writeln!(out, ";")?;
+    writeln!(
+        out,
+        "pub const GRID_AHEAD: microtrace::optimize::grid::GridAhead<'static, Number, u16> = microtrace::optimize::grid::GridAhead {{ width: core::num::NonZeroU16::new({}).unwrap(), height: core::num::NonZeroU16::new({}).unwrap(), side: {}, starts: &GRID_STARTS_AHEAD, pool: &GRID_POOL_AHEAD, depth: &GRID_DEPTH_AHEAD }};",
+        grid.width, grid.height, grid.side
+    )?;
+    Ok(true)
 }
 
 /// A hierarchy made ahead: its nodes and its leaves' objects (the firmware's index, `u16`).
