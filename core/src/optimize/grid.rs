@@ -419,7 +419,7 @@ impl<'a, N, I: Index> GridAhead<'a, N, I> {
         let (width, height) = (self.width.get(), self.height.get());
         let (cell_column, cell_row) = ((column / width).min(self.side.saturating_sub(1)), (row / height).min(self.side.saturating_sub(1)));
         let cell = usize::from(cell_row) * usize::from(self.side) + usize::from(cell_column);
-        let (Some(start), Some(end)) = (self.starts.get(cell), self.starts.get(cell + 1)) else { return (&[], &[], 0, 0) };
+        let Some(&[start, end]) = self.starts.get(cell..cell + 2) else { return (&[], &[], 0, 0) };
         let (start, end) = (start.get(), end.get());
         let dx = (column - cell_column * width).min(255);
         let dy = (row - cell_row * height).min(255);
