@@ -353,9 +353,7 @@ fn ahead<H: microtrace::number::Number>(description: &SceneDescription<PARSE_CAP
     let (mut boxes, mut triangles) = (vec![([0.0; 3], [0.0; 3]); objects.len()], vec![None; objects.len()]);
     let (mut pieces, mut owners) = (vec![([0.0; 3], [0.0; 3]); references], vec![0; references]);
     let scratch = microtrace::optimize::HierarchyScratch { boxes: &mut boxes, triangles: &mut triangles, references: &mut pieces, owners: &mut owners };
-    let used = if scene.optimizations.extents { microtrace::optimize::hierarchy_ahead(objects, scratch, &mut nodes, &mut order) } else { 0 };
-    let leaves = nodes[..used].iter().filter(|node| node.count > 0).map(|node| (node.first + node.count) as usize).max().unwrap_or(0);
-    let hierarchy = (used > 0).then(|| microtrace::optimize::bvh::Bvh { nodes: &nodes[..used], order: &order[..leaves] });
+    let hierarchy = if scene.optimizations.extents { microtrace::optimize::hierarchy_ahead(objects, scratch, &mut nodes, &mut order) } else { None };
     // The screen grid the chip would build for the view fixed here, from the same bounds in the
     // same number type (`rebuild_from_bounds`, as its preparation does): built here and kept in
     // flash, the chip builds none and keeps no pool in RAM.
@@ -363,7 +361,7 @@ fn ahead<H: microtrace::number::Number>(description: &SceneDescription<PARSE_CAP
     scene.acceleration.rebuild_from_bounds(&camera, optimizations, &bounds);
     let grid = scene.acceleration.grid_parts().filter(|_| optimizations.grid);
     let mut text = String::new();
-    write_ahead_flags(&mut text, used > 0, grid.is_some());
+    write_ahead_flags(&mut text, hierarchy.is_some(), grid.is_some());
     microtrace::scene::ahead::write_prepared_ahead(&*scene, &bounds, hierarchy, grid, &mut text).map_err(Ahead::Write)?;
     out.push_str(&text);
     Ok(())

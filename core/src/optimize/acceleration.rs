@@ -68,17 +68,13 @@ pub struct Acceleration<C: Config> {
     #[cfg(feature = "acceleration-tables")]
     hierarchy_nodes: usize,
     /// A hierarchy built ahead (the firmware's, at build time, in flash): used in place of
-    /// one built here when the optimizations would build one.
+    /// one built here when the optimizations would build one (`Acceleration::hierarchy`).
     #[cfg(feature = "acceleration-tables")]
     hierarchy_ahead: Option<Bvh<'static, C::Number, C::Index>>,
-    /// Whether the hierarchy made ahead is in use (Extents and shadow culling on).
-    #[cfg(feature = "acceleration-tables")]
-    hierarchy_ahead_used: bool,
     grid: Grid<C>,
     /// A grid made ahead for the view (the firmware's, at build time, in flash), used in place
-    /// of `grid` when the optimizations ask for a grid.
+    /// of `grid` when the optimizations ask for a grid (`Acceleration::grid_in_flash`).
     grid_ahead: Option<GridAhead<'static, C::Number, C::Index>>,
-    grid_ahead_used: bool,
 }
 
 impl<C: Config> core::fmt::Debug for Acceleration<C> {
@@ -108,11 +104,8 @@ impl<C: Config> Clone for Acceleration<C> {
             hierarchy_nodes: self.hierarchy_nodes,
             #[cfg(feature = "acceleration-tables")]
             hierarchy_ahead: self.hierarchy_ahead,
-            #[cfg(feature = "acceleration-tables")]
-            hierarchy_ahead_used: self.hierarchy_ahead_used,
             grid: self.grid.clone(),
             grid_ahead: self.grid_ahead,
-            grid_ahead_used: self.grid_ahead_used,
         }
     }
 }
@@ -143,11 +136,8 @@ where
         hierarchy_nodes: 0,
         #[cfg(feature = "acceleration-tables")]
         hierarchy_ahead: None,
-        #[cfg(feature = "acceleration-tables")]
-        hierarchy_ahead_used: false,
         grid: Grid::UNSET,
         grid_ahead: None,
-        grid_ahead_used: false,
     };
 }
 
@@ -192,12 +182,9 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
             hierarchy_nodes: 0,
             #[cfg(feature = "acceleration-tables")]
             hierarchy_ahead: None,
-            #[cfg(feature = "acceleration-tables")]
-            hierarchy_ahead_used: false,
             grid: Grid::inactive(count),
             grid_ahead: None,
-            grid_ahead_used: false,
-        }
+            }
     }
 
     /// The thesis's `preprocess` for the optimizations (digest §8.2).
@@ -317,9 +304,7 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
         #[cfg(feature = "acceleration-tables")]
         {
             self.hierarchy_nodes = 0;
-            let wanted = tuning.shadow_culling && optimizations.extents;
-            self.hierarchy_ahead_used = C::HIERARCHY_AHEAD && wanted && self.hierarchy_ahead.is_some();
-            if C::HIERARCHY && wanted && !self.hierarchy_ahead_used && count > HIERARCHY_ABOVE {
+            if C::HIERARCHY && tuning.shadow_culling && optimizations.extents && self.hierarchy_in_flash().is_none() && count > HIERARCHY_ABOVE {
                 self.hierarchy_nodes = build_hierarchy::<C>(count, &of, self.hierarchy.slots_mut(), self.hierarchy_order.slots_mut());
             }
         }
@@ -330,8 +315,7 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
             }
         }
         // A grid made ahead for this view (the firmware's) is used as it is.
-        self.grid_ahead_used = C::GRID_AHEAD && optimizations.grid && self.grid_ahead.is_some();
-        if !optimizations.grid || self.grid_ahead_used {
+        if !optimizations.grid || self.grid_in_flash().is_some() {
             self.grid.clear();
             return;
         }
@@ -380,7 +364,7 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
 
     /// Grid: its cells across and down, `None` without a grid.
     pub fn grid_side(&self) -> Option<u16> {
-        match self.grid_ahead.filter(|_| C::GRID_AHEAD && self.grid_ahead_used) {
+        match self.grid_in_flash() {
             Some(ahead) => Some(ahead.side),
             None => self.grid.side(),
         }
@@ -389,12 +373,16 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
     /// Grid: the entries of the pixel's cell and the pixel's offsets in it; `None` without a grid.
     #[inline]
     pub fn grid_cell(&self, pixel: PixelPosition) -> Option<grid::CellAt<'_, C>> {
-        if C::GRID_AHEAD && self.grid_ahead_used {
-            // By reference: a copy of the parts out of the option cost a Cortex-M4F 14
-            // instructions a pixel.
-            return self.grid_ahead.as_ref().map(|ahead| ahead.cell(pixel.column, pixel.row));
+        if let Some(ahead) = self.grid_in_flash() {
+            return Some(ahead.cell(pixel.column, pixel.row));
         }
         self.grid.cell(pixel.column, pixel.row)
+    }
+
+    /// The grid made ahead, when the optimizations ask for a grid.
+    #[inline]
+    fn grid_in_flash(&self) -> Option<&GridAhead<'static, N, C::Index>> {
+        self.grid_ahead.as_ref().filter(|_| C::GRID_AHEAD && self.optimizations.grid)
     }
 
     /// Holds a grid made ahead for the view the scene is prepared for (the firmware's, in
@@ -496,12 +484,12 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
 
     /// Whether the grid is in use (on, and its pool did not overflow).
     pub fn grid_active(&self) -> bool {
-        self.grid_ahead_used || self.grid.is_active()
+        self.grid_in_flash().is_some() || self.grid.is_active()
     }
 
     /// Entries over all grid cells.
     pub fn grid_entries(&self) -> usize {
-        match self.grid_ahead.filter(|_| self.grid_ahead_used) {
+        match self.grid_in_flash() {
             Some(ahead) => ahead.entries(),
             None => self.grid.entries(),
         }
@@ -510,7 +498,7 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
     /// The entries the grid's pool holds ([`Config::GRID_ENTRIES_PER_OBJECT`] per object; a
     /// grid made ahead holds exactly its entries).
     pub fn grid_capacity(&self) -> usize {
-        match self.grid_ahead.filter(|_| self.grid_ahead_used) {
+        match self.grid_in_flash() {
             Some(ahead) => ahead.entries(),
             None => self.grid.capacity(),
         }
@@ -538,12 +526,20 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
         self.hierarchy_ahead = hierarchy.filter(|hierarchy| C::HIERARCHY_AHEAD && !hierarchy.nodes.is_empty());
     }
 
+    /// The hierarchy made ahead, when the optimizations would build one (Extents and shadow
+    /// culling on).
+    #[cfg(feature = "acceleration-tables")]
+    #[inline]
+    fn hierarchy_in_flash(&self) -> Option<Bvh<'static, N, C::Index>> {
+        self.hierarchy_ahead.filter(|_| C::HIERARCHY_AHEAD && self.tuning.shadow_culling && self.optimizations.extents)
+    }
+
     /// The shadow and secondary rays' hierarchy, when the scene has one (`Config::HIERARCHY`,
     /// or one held ahead).
     #[cfg(feature = "acceleration-tables")]
     pub fn hierarchy(&self) -> Option<Bvh<'_, N, C::Index>> {
-        if C::HIERARCHY_AHEAD && self.hierarchy_ahead_used {
-            return self.hierarchy_ahead;
+        if let Some(ahead) = self.hierarchy_in_flash() {
+            return Some(ahead);
         }
         let nodes = self.hierarchy.slots().get(..self.hierarchy_nodes).filter(|nodes| !nodes.is_empty())?;
         Some(Bvh { nodes, order: self.hierarchy_order.slots() })
@@ -568,7 +564,7 @@ fn build_hierarchy<C: Config>(
     let mut references = C::Hierarchy::<super::bvh::WorldBox>::filled(capacity, ([0.0; 3], [0.0; 3]));
     let mut owners = C::Hierarchy::<usize>::filled(capacity, 0);
     let scratch = HierarchyScratch { boxes: boxes.slots_mut(), triangles: triangles.slots_mut(), references: references.slots_mut(), owners: owners.slots_mut() };
-    build_hierarchy_in(count, &|index| of(index).and_then(|(_, geometry)| geometry), scratch, nodes, order)
+    build_hierarchy_in(count, &|index| of(index).and_then(|(_, geometry)| geometry), scratch, nodes, order).0
 }
 
 /// A triangle's corners in world space (`early_split` cuts its box along them).
@@ -587,16 +583,18 @@ pub struct HierarchyScratch<'a> {
 }
 
 /// The hierarchy a firmware's scene of `objects` gets (none for [`HIERARCHY_AHEAD_ABOVE`]
-/// objects or fewer),
-/// built from the geometry the tracer renders in `N`, as a host's preparation builds it: what
-/// the firmware's build script writes ahead into flash (the chip has no `f64` to build one).
-/// `nodes` and `order` as long as the references (twice the objects); returns the nodes used.
+/// objects or fewer), built from the geometry the tracer renders in `N`, as a host's
+/// preparation builds it: what the firmware's build script writes ahead into flash (the chip
+/// has no `f64` to build one). `nodes` and `order` as long as the references
+/// ([`hierarchy_references`]); the hierarchy is the parts of them it used.
 #[cfg(feature = "acceleration-tables")]
-pub fn hierarchy_ahead<N: Number, I: Index>(objects: &[ObjectDescription], scratch: HierarchyScratch<'_>, nodes: &mut [BvhNode<N>], order: &mut [I]) -> usize {
+pub fn hierarchy_ahead<'a, N: Number, I: Index>(objects: &[ObjectDescription], scratch: HierarchyScratch<'_>, nodes: &'a mut [BvhNode<N>], order: &'a mut [I]) -> Option<Bvh<'a, N, I>> {
     if objects.len() <= HIERARCHY_AHEAD_ABOVE {
-        return 0;
+        return None;
     }
-    build_hierarchy_in(objects.len(), &|index| objects.get(index).and_then(rendered_geometry::<N>), scratch, nodes, order)
+    let (used, references) = build_hierarchy_in(objects.len(), &|index| objects.get(index).and_then(rendered_geometry::<N>), scratch, nodes, order);
+    let nodes = nodes.get(..used).filter(|nodes| !nodes.is_empty())?;
+    Some(Bvh { nodes, order: order.get(..references)? })
 }
 
 /// The references a hierarchy of `objects` objects may take (its nodes and its order).
@@ -612,23 +610,24 @@ fn build_hierarchy_in<N: Number, I: Index>(
     scratch: HierarchyScratch<'_>,
     nodes: &mut [BvhNode<N>],
     order: &mut [I],
-) -> usize {
+) -> (usize, usize) {
     let HierarchyScratch { boxes, triangles, references, owners } = scratch;
-    let (Some(boxes), Some(triangles)) = (boxes.get_mut(..count), triangles.get_mut(..count)) else { return 0 };
+    let (Some(boxes), Some(triangles)) = (boxes.get_mut(..count), triangles.get_mut(..count)) else { return (0, 0) };
     for (index, (slot, triangle)) in boxes.iter_mut().zip(triangles.iter_mut()).enumerate() {
-        let Some(geometry) = geometry_of(index) else { return 0 };
+        let Some(geometry) = geometry_of(index) else { return (0, 0) };
         let (low, high) = geometry.world_box();
         if !(low.iter().chain(&high).all(|c| c.is_finite())) {
-            return 0;
+            return (0, 0);
         }
         *slot = (low, high);
         *triangle = geometry.triangle();
     }
+    // As many references as every table holds.
     let capacity = order.len().min(nodes.len()).min(references.len()).min(owners.len());
-    let (references, owners) = (&mut references[..capacity], &mut owners[..capacity]);
+    let (Some(references), Some(owners)) = (references.get_mut(..capacity), owners.get_mut(..capacity)) else { return (0, 0) };
     let used = super::early_split::split(count, &|index| boxes.get(index).copied().unwrap_or_default(), &|index| triangles.get(index).copied().flatten(), references, owners);
-    let Some(references) = references.get(..used) else { return 0 };
-    super::bvh::build(references, |reference| owners.get(reference).copied().unwrap_or(0), nodes, order)
+    let Some(references) = references.get(..used) else { return (0, 0) };
+    (super::bvh::build(references, |reference| owners.get(reference).copied().unwrap_or(0), nodes, order), used)
 }
 
 /// What the optimizations need of an object that depends on it alone: its primitive, its
