@@ -124,7 +124,7 @@ fn size_only(scene_path: &Path, text: &[u8], (width, height): (u16, u16), (numbe
     memory.write(&mut source);
     write_stack_reserve(&mut source);
     // As a build that prepares it would: a hierarchy for many objects with Extents on.
-    write_ahead_flags(&mut source, description.objects.len() > microtrace::optimize::HIERARCHY_AHEAD_ABOVE && description.optimizations.extents, false);
+    write_ahead_flags(&mut source, description.objects.len() > microtrace::optimize::HIERARCHY_AHEAD_ABOVE && description.optimizations.extents, false, false);
     writeln!(source, "/// Sizing only: no object is prepared ahead.").unwrap();
     writeln!(source, "pub static OBJECTS_AHEAD: [microtrace::model::Object<Number>; 0] = [];").unwrap();
     writeln!(source, "pub static SOLID_NODES_AHEAD: [microtrace::model::PreparedSolidNode<Number>; 0] = [];").unwrap();
@@ -135,12 +135,16 @@ fn size_only(scene_path: &Path, text: &[u8], (width, height): (u16, u16), (numbe
 }
 
 /// `HIERARCHY_IN_FLASH`: whether the scene's shadow and secondary rays walk a hierarchy kept in
-/// flash (then no shadow tables are built on the stack: src/ram.rs); `MADE_AHEAD`, what is in
-/// flash as the scene's `Arrays` takes it (the hierarchy, the screen grid); and the grid's
+/// flash; `SHADOW_TABLES_IN_FLASH`, whether the lights' shadow tables are (with either, no
+/// shadow tables are built on the stack: src/ram.rs); `MADE_AHEAD`, what is in flash as the
+/// scene's `Arrays` takes it (the hierarchy, the screen grid, the shadow tables); and the grid's
 /// pool entries per object (none with the grid in flash).
-fn write_ahead_flags(source: &mut String, hierarchy: bool, grid: bool) {
+fn write_ahead_flags(source: &mut String, hierarchy: bool, grid: bool, shadow_tables: bool) {
     writeln!(source, "/// Whether a hierarchy of boxes made ahead is in flash (src/ram.rs: no shadow tables).\npub const HIERARCHY_IN_FLASH: bool = {hierarchy};").unwrap();
-    let ahead = u8::from(hierarchy) * microtrace::config::AHEAD_HIERARCHY + u8::from(grid) * microtrace::config::AHEAD_GRID;
+    writeln!(source, "/// Whether the lights' shadow tables made ahead are in flash (src/ram.rs).\npub const SHADOW_TABLES_IN_FLASH: bool = {shadow_tables};").unwrap();
+    let ahead = u8::from(hierarchy) * microtrace::config::AHEAD_HIERARCHY
+        + u8::from(grid) * microtrace::config::AHEAD_GRID
+        + u8::from(shadow_tables) * microtrace::config::AHEAD_SHADOW_TABLES;
     writeln!(source, "/// What is made ahead (`microtrace::config::Arrays`' `AHEAD`).\npub const MADE_AHEAD: u8 = {ahead};").unwrap();
     // The grid's pool: none when the grid is in flash; else the entries per object the scene's
     // grid holds at the build's view (xtask counts them, `MICROTRACE_GRID_ENTRIES_PER_OBJECT`),
@@ -360,9 +364,14 @@ fn ahead<H: microtrace::number::Number>(description: &SceneDescription<PARSE_CAP
     let (camera, optimizations) = (scene.camera, scene.optimizations);
     scene.acceleration.rebuild_from_bounds(&camera, optimizations, &bounds);
     let grid = scene.acceleration.grid_parts().filter(|_| optimizations.grid);
+    // The lights' shadow tables a render would build for this view (the light is fixed here
+    // too): in flash, the chip builds none and keeps none on its stack.
     let mut text = String::new();
-    write_ahead_flags(&mut text, hierarchy.is_some(), grid.is_some());
-    microtrace::scene::ahead::write_prepared_ahead(&*scene, &bounds, hierarchy, grid, &mut text).map_err(Ahead::Write)?;
+    microtrace::render::shadow_tables_ahead(&*scene, |tables| {
+        write_ahead_flags(&mut text, hierarchy.is_some(), grid.is_some(), !tables.is_empty());
+        microtrace::scene::ahead::write_prepared_ahead(&*scene, &bounds, hierarchy, grid, tables, &mut text)
+    })
+    .map_err(Ahead::Write)?;
     out.push_str(&text);
     Ok(())
 }

@@ -82,6 +82,10 @@ pub trait Config: 'static {
     /// flash: `scene::ahead::PreparedAhead::grid`): preparation then builds none, and the
     /// grid's pool takes no RAM.
     const GRID_AHEAD: bool = false;
+    /// Whether the scene comes with its lights' shadow tables made ahead (the firmware's, in
+    /// flash: `scene::ahead::PreparedAhead::shadow_tables`): the render builds none, so the code
+    /// that builds them is not linked and their stack is not taken.
+    const SHADOW_TABLES_AHEAD: bool = false;
 
     /// The grid's pool entries for a scene of `objects` objects (a table sized at run time is
     /// made this long; an array keeps its length).
@@ -168,7 +172,8 @@ pub const DEFAULT_ANTIALIAS_ROW: usize = 2049;
 /// Every table an array of a capacity fixed at compile time: `K` objects (kept in `O`),
 /// `POOL` grid entries per object, a ray tree `DEPTH` deep and antialiasing rows of `ROW`
 /// corners, the solids' nodes in `S`, the look-up table in `P`, `OTHER_LIGHTS` lights after the
-/// first, and the structures made ahead that `AHEAD` names ([`AHEAD_HIERARCHY`], [`AHEAD_GRID`]).
+/// first, and the structures made ahead that `AHEAD` names ([`AHEAD_HIERARCHY`], [`AHEAD_GRID`],
+/// [`AHEAD_SHADOW_TABLES`]).
 /// The firmware's scene is one (sized by its scene), and so are the tests'.
 pub struct Arrays<
     N,
@@ -188,6 +193,8 @@ pub struct Arrays<
 pub const AHEAD_HIERARCHY: u8 = 1;
 /// [`Arrays`]' `AHEAD`: the screen grid made ahead ([`Config::GRID_AHEAD`]).
 pub const AHEAD_GRID: u8 = 2;
+/// [`Arrays`]' `AHEAD`: the lights' shadow tables made ahead ([`Config::SHADOW_TABLES_AHEAD`]).
+pub const AHEAD_SHADOW_TABLES: u8 = 4;
 
 impl<N, const K: usize, O, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize, const AHEAD: u8> Debug for Arrays<N, K, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS, AHEAD> {
     fn fmt(&self, formatter: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
@@ -223,6 +230,7 @@ where
     const TREE_DEPTH: usize = DEPTH;
     const HIERARCHY_AHEAD: bool = AHEAD & AHEAD_HIERARCHY != 0;
     const GRID_AHEAD: bool = AHEAD & AHEAD_GRID != 0;
+    const SHADOW_TABLES_AHEAD: bool = AHEAD & AHEAD_SHADOW_TABLES != 0;
 }
 
 /// The space grid's cell entries per object on average at most (else no grid).

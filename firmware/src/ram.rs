@@ -32,10 +32,11 @@ use microtrace::optimize::shadow_culling::{BlockerSet, DirectionChord, LightReac
 
 use crate::scene;
 
-/// The stack the render's shadow tables take per object, or preparation's tables when a
-/// hierarchy in flash finds the shadow rays' blockers instead (`scene::HIERARCHY_IN_FLASH`: no
-/// shadow tables).
-const TABLES_PER_OBJECT: usize = if scene::HIERARCHY_IN_FLASH { PREPARATION_PER_OBJECT } else { SHADOW_TABLES_PER_OBJECT };
+/// The stack the render's shadow tables take per object, or preparation's tables when none are
+/// built: a hierarchy in flash finds the shadow rays' blockers instead
+/// (`scene::HIERARCHY_IN_FLASH`), or the tables themselves are in flash
+/// (`scene::SHADOW_TABLES_IN_FLASH`).
+const TABLES_PER_OBJECT: usize = if scene::HIERARCHY_IN_FLASH || scene::SHADOW_TABLES_IN_FLASH { PREPARATION_PER_OBJECT } else { SHADOW_TABLES_PER_OBJECT };
 
 /// Preparation's tables per object on the stack (optimize/acceleration.rs, `rebuild_with`: each
 /// object's screen capsule and primitive; optimize/grid.rs: its places in the grid's pool),

@@ -406,6 +406,19 @@ fn snooker_fits_the_lm3s811evb() {
     let (ram, stack, flash) = (run.numbers["static_ram_bytes"], run.numbers["stack_peak_bytes"], run.numbers["flash_bytes"]);
     assert!(ram + stack <= 8 * 1024, "snooker on the lm3s811evb: {ram} bytes of static RAM and {stack} of peak stack exceed its 8,192");
     assert!(flash <= 64 * 1024, "snooker on the lm3s811evb: {flash} bytes of flash exceed its 65,536");
+    // The light's shadow tables were made at build time (the view and the light are fixed
+    // there): they are in flash, one cone and one blocker set an object, and the code that
+    // builds them is not linked.
+    let elf = std::fs::read(&run.elf).unwrap();
+    let (symbols, _) = xtask::elf::flash_symbols(&elf).unwrap();
+    let bytes = |name: &str| symbols.iter().find(|symbol| symbol.demangled.ends_with(name)).map(|symbol| symbol.bytes);
+    let cones = bytes("::SHADOW_CONES_AHEAD_0").expect("snooker: no light cones in flash");
+    let blockers = bytes("::SHADOW_BLOCKERS_AHEAD_0").expect("snooker: no blocker sets in flash");
+    let cone = std::mem::size_of::<microtrace::optimize::shadow_culling::DirectionChord<f32>>();
+    let set = std::mem::size_of::<microtrace::optimize::shadow_culling::BlockerSet>();
+    let objects = microtrace::parser::parse::<64>(&std::fs::read(scene_path("snooker.mts")).unwrap()).unwrap().objects.len();
+    assert_eq!((cones, blockers), ((objects * cone) as u64, (objects * set) as u64), "snooker: the shadow tables in flash are not one cone and one set for each of its {objects} objects");
+    assert!(!symbols.iter().any(|symbol| symbol.demangled.contains("build_shadow_tables")), "snooker: the shadow tables' building code is linked");
 }
 
 /// The smallest board's own display (issue 25, target 1): snooker rendered at the panel's 96x16

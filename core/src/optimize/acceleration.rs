@@ -16,7 +16,7 @@ use super::extents::Extent;
 use super::grid::{Grid, GridAhead};
 use super::projection::Screen;
 use super::build_options::SILHOUETTES;
-use super::shadow_culling::ShadowBound;
+use super::shadow_culling::{ShadowBound, ShadowTablesAhead};
 #[cfg(feature = "acceleration-tables")]
 use super::bvh::{Bvh, BvhNode};
 use super::{capsule, grid, projection, shadow_culling, sortlist};
@@ -75,6 +75,10 @@ pub struct Acceleration<C: Config> {
     /// A grid made ahead for the view (the firmware's, at build time, in flash), used in place
     /// of `grid` when the optimizations ask for a grid (`Acceleration::grid_in_flash`).
     grid_ahead: Option<GridAhead<'static, C::Number, C::Index>>,
+    /// The lights' shadow tables made ahead for this view and these lights (the firmware's, in
+    /// flash; `Config::SHADOW_TABLES_AHEAD`): a render uses them instead of building its own.
+    /// An `Option` so that an unprepared scene is all zeros (`.bss`, not an image in flash).
+    shadow_tables_ahead: Option<&'static [ShadowTablesAhead<'static, C::Number>]>,
 }
 
 impl<C: Config> core::fmt::Debug for Acceleration<C> {
@@ -106,6 +110,7 @@ impl<C: Config> Clone for Acceleration<C> {
             hierarchy_ahead: self.hierarchy_ahead,
             grid: self.grid.clone(),
             grid_ahead: self.grid_ahead,
+            shadow_tables_ahead: self.shadow_tables_ahead,
         }
     }
 }
@@ -138,6 +143,7 @@ where
         hierarchy_ahead: None,
         grid: Grid::UNSET,
         grid_ahead: None,
+        shadow_tables_ahead: None,
     };
 }
 
@@ -184,6 +190,7 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
             hierarchy_ahead: None,
             grid: Grid::inactive(count),
             grid_ahead: None,
+            shadow_tables_ahead: None,
             }
     }
 
@@ -389,6 +396,19 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
     /// flash), for the rebuilds from now on, which use it when the optimizations ask for a grid.
     pub fn hold_grid_ahead(&mut self, grid: Option<GridAhead<'static, N, C::Index>>) {
         self.grid_ahead = grid.filter(|_| C::GRID_AHEAD);
+    }
+
+    /// Holds the lights' shadow tables made ahead for the view and lights the scene is prepared
+    /// for (the firmware's, in flash): with [`Config::SHADOW_TABLES_AHEAD`], a render uses them
+    /// and builds none.
+    pub fn hold_shadow_tables_ahead(&mut self, tables: &'static [ShadowTablesAhead<'static, N>]) {
+        self.shadow_tables_ahead = Some(tables).filter(|_| C::SHADOW_TABLES_AHEAD);
+    }
+
+    /// The lights' shadow tables made ahead (empty: none), one per light in the scene's order.
+    #[inline]
+    pub fn shadow_tables_ahead(&self) -> &'static [ShadowTablesAhead<'static, N>] {
+        self.shadow_tables_ahead.unwrap_or(&[])
     }
 
     /// The grid as built, by its parts (`None`: none active): what the firmware's build writes

@@ -394,6 +394,11 @@ impl BlockerSet {
 
     pub const EMPTY: Self = Self { words: [0; 4] };
 
+    /// The set of [`BlockerSet::words`] (a table written ahead, `scene::ahead`).
+    pub const fn from_words(words: [u32; 4]) -> Self {
+        Self { words }
+    }
+
     /// Adds `index` (ignored from [`BlockerSet::CAPACITY`] on).
     pub fn insert(&mut self, index: usize) {
         if let Some(word) = self.words.get_mut(index / 32) {
@@ -409,6 +414,16 @@ impl BlockerSet {
     pub fn words(self) -> [u32; 4] {
         self.words
     }
+}
+
+/// One light's shadow tables made ahead (the firmware's, at build time, in flash): for a point
+/// light each object's cone of directions from it (none for a direction), and each object's
+/// blockers among the first 128 (none with a hierarchy) — the tables a render would build
+/// (`render/shadow_tables.rs`), bit for bit.
+#[derive(Clone, Copy, Debug)]
+pub struct ShadowTablesAhead<'a, N> {
+    pub light_cones: &'a [DirectionChord<N>],
+    pub blockers: &'a [BlockerSet],
 }
 
 /// Which objects may shadow which: `blockers[r]` gets `b` (for `b` < 128) when a shadow

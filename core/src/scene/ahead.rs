@@ -13,6 +13,7 @@ use crate::number::Number;
 use crate::optimize::bounding_sphere::BoundingSphere;
 use crate::optimize::ObjectBounds;
 use crate::optimize::grid::GridAhead;
+use crate::optimize::shadow_culling::{BlockerSet, DirectionChord, ShadowTablesAhead};
 #[cfg(feature = "acceleration-tables")]
 use crate::optimize::bvh::Bvh;
 use crate::model::{SceneError, SceneErrorKind};
@@ -56,6 +57,9 @@ pub struct PreparedAhead<'a, N, I = u16> {
     /// The screen grid for the view above ([`crate::optimize::Acceleration::grid_parts`] of
     /// the scene prepared on the host from the same bounds): preparation builds none.
     pub grid: Option<GridAhead<'a, N, I>>,
+    /// The lights' shadow tables for this view, one per light (empty: none made; the render's
+    /// `render::shadow_tables::tables_ahead` makes them on the host): the render builds none.
+    pub shadow_tables: &'a [ShadowTablesAhead<'a, N>],
 }
 
 impl<N: Number, C: Config<Number = N>> Prepared<C> {
@@ -102,6 +106,7 @@ impl<N: Number, C: Config<Number = N>> Prepared<C> {
         #[cfg(feature = "acceleration-tables")]
         self.acceleration.hold_hierarchy_ahead(parts.hierarchy);
         self.acceleration.hold_grid_ahead(parts.grid);
+        self.acceleration.hold_shadow_tables_ahead(parts.shadow_tables);
         self.acceleration.rebuild_from_bounds(&self.camera, self.optimizations, parts.bounds);
         Ok(())
     }
@@ -116,6 +121,7 @@ pub fn write_prepared_ahead<N: Number, C: Config<Number = N>>(
     bounds: &[ObjectBounds<N>],
     hierarchy: Hierarchy<'_, N>,
     grid: Option<GridAhead<'_, N, u16>>,
+    shadow_tables: &[ShadowTablesAhead<'_, N>],
     out: &mut dyn Write,
 ) -> fmt::Result {
     let count = scene.objects.len();
@@ -179,6 +185,7 @@ pub fn write_prepared_ahead<N: Number, C: Config<Number = N>>(
     writeln!(out, "] }};")?;
     let hierarchy = if write_hierarchy(hierarchy, out)? { "Some(HIERARCHY_AHEAD)" } else { "None" };
     let grid = if write_grid(grid, out)? { "Some(GRID_AHEAD)" } else { "None" };
+    write_shadow_tables(shadow_tables, out)?;
     let camera = &scene.camera;
     let (origin, spacing, view_plane) = camera.sampling();
     let v = camera.viewport;
@@ -238,7 +245,7 @@ pub fn write_prepared_ahead<N: Number, C: Config<Number = N>>(
         " }},\n    background: {},\n    shadows: {},\n    dither: {},\n    optimizations: microtrace::model::Optimizations {{ pixelbuffer: {}, extents: {}, grid: {}, sortlist: {} }},",
         scene.background, scene.shadows, scene.dither, o.pixelbuffer, o.extents, o.grid, o.sortlist
     )?;
-    writeln!(out, "    palette: &PALETTE_AHEAD,\n    bounds: &BOUNDS_AHEAD,\n    hierarchy: {hierarchy},\n    grid: {grid},\n}};")
+    writeln!(out, "    palette: &PALETTE_AHEAD,\n    bounds: &BOUNDS_AHEAD,\n    hierarchy: {hierarchy},\n    grid: {grid},\n    shadow_tables: &SHADOW_TABLES_AHEAD,\n}};")
 }
 
 /// `GRID_AHEAD` and its tables (the cells' starts, the entries and their depth bounds), if
@@ -260,6 +267,39 @@ fn write_grid<N: Number>(grid: Option<GridAhead<'_, N, u16>>, out: &mut dyn Writ
         grid.width, grid.height, grid.side
     )?;
     Ok(true)
+}
+
+/// `SHADOW_TABLES_AHEAD`, one light's tables after another (empty: none made ahead).
+fn write_shadow_tables<N: Number>(tables: &[ShadowTablesAhead<'_, N>], out: &mut dyn Write) -> fmt::Result {
+    for (light, table) in tables.iter().enumerate() {
+        writeln!(out, "pub static SHADOW_CONES_AHEAD_{light}: [microtrace::optimize::shadow_culling::DirectionChord<Number>; {}] = [", table.light_cones.len())?;
+        for cone in table.light_cones {
+            direction_chord(cone, out)?;
+        }
+        writeln!(out, "];")?;
+        writeln!(out, "pub static SHADOW_BLOCKERS_AHEAD_{light}: [microtrace::optimize::shadow_culling::BlockerSet; {}] = [", table.blockers.len())?;
+        for set in table.blockers {
+            writeln!(out, "    microtrace::optimize::shadow_culling::BlockerSet::from_words({:?}),", BlockerSet::words(*set))?;
+        }
+        writeln!(out, "];")?;
+    }
+    writeln!(out, "pub static SHADOW_TABLES_AHEAD: [microtrace::optimize::shadow_culling::ShadowTablesAhead<'static, Number>; {}] = [", tables.len())?;
+    for light in 0..tables.len() {
+        writeln!(out, "    microtrace::optimize::shadow_culling::ShadowTablesAhead {{ light_cones: &SHADOW_CONES_AHEAD_{light}, blockers: &SHADOW_BLOCKERS_AHEAD_{light} }},")?;
+    }
+    writeln!(out, "];")
+}
+
+fn direction_chord<N: Number>(cone: &DirectionChord<N>, out: &mut dyn Write) -> fmt::Result {
+    write!(out, "    microtrace::optimize::shadow_culling::DirectionChord {{ start: ")?;
+    vector(out, cone.start)?;
+    write!(out, ", along: ")?;
+    vector(out, cone.along)?;
+    for (name, value) in [("inverse_squared", cone.inverse_squared), ("reach_squared", cone.reach_squared), ("cosine", cone.cosine)] {
+        write!(out, ", {name}: ")?;
+        value.write_literal(out)?;
+    }
+    writeln!(out, ", low: {:?}, high: {:?} }},", cone.low, cone.high)
 }
 
 /// A hierarchy made ahead: its nodes and its leaves' objects (the firmware's index, `u16`).
