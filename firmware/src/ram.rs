@@ -38,12 +38,16 @@ use crate::scene;
 /// (`scene::SHADOW_TABLES_IN_FLASH`).
 const TABLES_PER_OBJECT: usize = if scene::HIERARCHY_IN_FLASH || scene::SHADOW_TABLES_IN_FLASH { PREPARATION_PER_OBJECT } else { SHADOW_TABLES_PER_OBJECT };
 
-/// Preparation's tables per object on the stack (optimize/acceleration.rs, `rebuild_with`: each
-/// object's screen capsule and primitive; optimize/grid.rs: its places in the grid's pool),
-/// twice: once is less than measured (tree-s6 in `f32`, 40 bytes an object once, its peak 60
-/// an object above the base), as a table made and then moved can be live twice.
-const PREPARATION_PER_OBJECT: usize =
-    2 * (size_of::<microtrace::optimize::capsule::Capsule<scene::Number>>() + size_of::<microtrace::model::Primitive>() + scene::GRID_ENTRIES_PER_OBJECT * size_of::<u16>());
+/// Preparation's tables per object on the stack when the chip builds its screen grid
+/// (optimize/acceleration.rs, `rebuild_with`: each object's screen capsule and primitive;
+/// optimize/grid.rs: its places in the grid's pool), twice: once is less than measured (tree-s6
+/// in `f32`, 40 bytes an object once, its peak 60 an object above the base), as a table made
+/// and then moved can be live twice. None when the grid is in flash (no pool, none built).
+const PREPARATION_PER_OBJECT: usize = if scene::GRID_ENTRIES_PER_OBJECT == 0 {
+    0
+} else {
+    2 * (size_of::<microtrace::optimize::capsule::Capsule<scene::Number>>() + size_of::<microtrace::model::Primitive>() + scene::GRID_ENTRIES_PER_OBJECT * size_of::<u16>())
+};
 
 /// The shadow tables per object (render/shadow_tables.rs: `with_shadow_culling`,
 /// `build_shadow_tables`, and for a scene with several lights `with_more_lights_culling`, whose

@@ -19,7 +19,8 @@ fn usage() -> &'static str {
       --stack-reserve: the stack the build's RAM check keeps free (default: 4 KB plus the
                        render's shadow tables per object (with a hierarchy in flash,
                        preparation's tables), at least 12288; on the 8 KB
-                       lm3s811evb 1.5 KB plus the tables, at least 3072; firmware/src/ram.rs).
+                       lm3s811evb 1.5 KB plus the tables, at least 2560, 3072 with its
+                       OLED; firmware/src/ram.rs).
       --size: the render's size (default 128x64; the lm3s811evb's OLED is 96x16).
       --progressive renders coarse to fine (8x8 blocks, then 4x4, 2x2, every pixel): the same
       image, the rays of each pass reported. --framebuffer builds the framebuffer render (the
