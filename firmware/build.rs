@@ -124,7 +124,7 @@ fn size_only(scene_path: &Path, text: &[u8], (width, height): (u16, u16), (numbe
     memory.write(&mut source);
     write_stack_reserve(&mut source);
     // As a build that prepares it would: a hierarchy for many objects with Extents on.
-    write_ahead_flags(&mut source, description.objects.len() > microtrace::optimize::HIERARCHY_AHEAD_ABOVE && description.optimizations.extents, false, false);
+    write_ahead_flags(&mut source, description.objects.len() > microtrace::optimize::HIERARCHY_AHEAD_ABOVE && description.optimizations.extents, false, false, false);
     writeln!(source, "/// Sizing only: no object is prepared ahead.").unwrap();
     writeln!(source, "pub static OBJECTS_AHEAD: [microtrace::model::Object<Number>; 0] = [];").unwrap();
     writeln!(source, "pub static SOLID_NODES_AHEAD: [microtrace::model::PreparedSolidNode<Number>; 0] = [];").unwrap();
@@ -137,14 +137,17 @@ fn size_only(scene_path: &Path, text: &[u8], (width, height): (u16, u16), (numbe
 /// `HIERARCHY_IN_FLASH`: whether the scene's shadow and secondary rays walk a hierarchy kept in
 /// flash; `SHADOW_TABLES_IN_FLASH`, whether the lights' shadow tables are (with either, no
 /// shadow tables are built on the stack: src/ram.rs); `MADE_AHEAD`, what is in flash as the
-/// scene's `Arrays` takes it (the hierarchy, the screen grid, the shadow tables); and the grid's
-/// pool entries per object (none with the grid in flash).
-fn write_ahead_flags(source: &mut String, hierarchy: bool, grid: bool, shadow_tables: bool) {
+/// scene's `Arrays` takes it (the hierarchy, the screen grid, the shadow tables, the view's
+/// tables); `VIEW_TABLE_OBJECTS`, the room for the view's tables in RAM (none when made ahead);
+/// and the grid's pool entries per object (none with the grid in flash).
+fn write_ahead_flags(source: &mut String, hierarchy: bool, grid: bool, shadow_tables: bool, view: bool) {
     writeln!(source, "/// Whether a hierarchy of boxes made ahead is in flash (src/ram.rs: no shadow tables).\npub const HIERARCHY_IN_FLASH: bool = {hierarchy};").unwrap();
     writeln!(source, "/// Whether the lights' shadow tables made ahead are in flash (src/ram.rs).\npub const SHADOW_TABLES_IN_FLASH: bool = {shadow_tables};").unwrap();
     let ahead = u8::from(hierarchy) * microtrace::config::AHEAD_HIERARCHY
         + u8::from(grid) * microtrace::config::AHEAD_GRID
-        + u8::from(shadow_tables) * microtrace::config::AHEAD_SHADOW_TABLES;
+        + u8::from(shadow_tables) * microtrace::config::AHEAD_SHADOW_TABLES
+        + u8::from(view) * microtrace::config::AHEAD_VIEW;
+    writeln!(source, "/// The objects the tables that depend on the view hold in RAM: none when they are made ahead.\npub const VIEW_TABLE_OBJECTS: usize = if {view} {{ 0 }} else {{ OBJECT_COUNT }};").unwrap();
     writeln!(source, "/// What is made ahead (`microtrace::config::Arrays`' `AHEAD`).\npub const MADE_AHEAD: u8 = {ahead};").unwrap();
     // The grid's pool: none when the grid is in flash; else the entries per object the scene's
     // grid holds at the build's view (xtask counts them, `MICROTRACE_GRID_ENTRIES_PER_OBJECT`),
@@ -367,9 +370,12 @@ fn ahead<H: microtrace::number::Number>(description: &SceneDescription<PARSE_CAP
     // The lights' shadow tables a render would build for this view (the light is fixed here
     // too): in flash, the chip builds none and keeps none on its stack.
     let mut text = String::new();
+    // And the tables that depend on the view (each object's eye, extent, stadium, depth bound,
+    // shadow capsule, the test order), as the chip's preparation would make them: it makes none.
+    let view = scene.acceleration.view_parts(scene.eyes());
     microtrace::render::shadow_tables_ahead(&*scene, |tables| {
-        write_ahead_flags(&mut text, hierarchy.is_some(), grid.is_some(), !tables.is_empty());
-        microtrace::scene::ahead::write_prepared_ahead(&*scene, &bounds, hierarchy, grid, tables, &mut text)
+        write_ahead_flags(&mut text, hierarchy.is_some(), grid.is_some(), !tables.is_empty(), true);
+        microtrace::scene::ahead::write_prepared_ahead(&*scene, &bounds, hierarchy, grid, tables, Some(view), &mut text)
     })
     .map_err(Ahead::Write)?;
     out.push_str(&text);

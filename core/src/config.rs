@@ -32,6 +32,10 @@ pub trait Config: 'static {
     type Palette: PaletteStorage;
     /// One `T` per object.
     type PerObject<T: Copy>: Table<T>;
+    /// One per object of a table that depends on the view (each object's eye, extent, stadium,
+    /// depth bound, shadow capsule, the test order): empty where they are made ahead
+    /// ([`Config::VIEW_AHEAD`]), else as [`Config::PerObject`].
+    type ViewTable<T: Copy>: Table<T>;
     /// One `T` per object for each light after the first (as many tables of one per object as
     /// [`Config::OtherLights`] holds lights, one after the other): the per-render shadow tables
     /// of the other lights.
@@ -86,6 +90,11 @@ pub trait Config: 'static {
     /// flash: `scene::ahead::PreparedAhead::shadow_tables`): the render builds none, so the code
     /// that builds them is not linked and their stack is not taken.
     const SHADOW_TABLES_AHEAD: bool = false;
+    /// Whether the scene comes with the per-object tables that depend on its view made ahead
+    /// (the firmware's, in flash: `scene::ahead::PreparedAhead::view`): each object's eye, extent,
+    /// stadium, depth bound, shadow capsule and the test order; preparation makes none, and
+    /// [`Config::ViewTable`] can hold nothing.
+    const VIEW_AHEAD: bool = false;
 
     /// The grid's pool entries for a scene of `objects` objects (a table sized at run time is
     /// made this long; an array keeps its length).
@@ -173,7 +182,8 @@ pub const DEFAULT_ANTIALIAS_ROW: usize = 2049;
 /// `POOL` grid entries per object, a ray tree `DEPTH` deep and antialiasing rows of `ROW`
 /// corners, the solids' nodes in `S`, the look-up table in `P`, `OTHER_LIGHTS` lights after the
 /// first, and the structures made ahead that `AHEAD` names ([`AHEAD_HIERARCHY`], [`AHEAD_GRID`],
-/// [`AHEAD_SHADOW_TABLES`]).
+/// [`AHEAD_SHADOW_TABLES`], [`AHEAD_VIEW`]), and `VIEW` objects' room in the tables that depend
+/// on the view ([`Config::ViewTable`]: `K`, or none when they are made ahead).
 /// The firmware's scene is one (sized by its scene), and so are the tests'.
 pub struct Arrays<
     N,
@@ -186,6 +196,7 @@ pub struct Arrays<
     P = OwnedPalette,
     const OTHER_LIGHTS: usize = { MAX_LIGHTS - 1 },
     const AHEAD: u8 = 0,
+    const VIEW: usize = K,
 >(PhantomData<(N, O, S, P)>);
 
 /// [`Arrays`]' `AHEAD`: the shadow and secondary rays' hierarchy made ahead
@@ -195,14 +206,16 @@ pub const AHEAD_HIERARCHY: u8 = 1;
 pub const AHEAD_GRID: u8 = 2;
 /// [`Arrays`]' `AHEAD`: the lights' shadow tables made ahead ([`Config::SHADOW_TABLES_AHEAD`]).
 pub const AHEAD_SHADOW_TABLES: u8 = 4;
+/// [`Arrays`]' `AHEAD`: the tables that depend on the view made ahead ([`Config::VIEW_AHEAD`]).
+pub const AHEAD_VIEW: u8 = 8;
 
-impl<N, const K: usize, O, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize, const AHEAD: u8> Debug for Arrays<N, K, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS, AHEAD> {
+impl<N, const K: usize, O, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize, const AHEAD: u8, const VIEW: usize> Debug for Arrays<N, K, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS, AHEAD, VIEW> {
     fn fmt(&self, formatter: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         write!(formatter, "Arrays<{K} objects, {POOL} grid entries each, depth {DEPTH}, row {ROW}>")
     }
 }
 
-impl<N, const K: usize, O, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize, const AHEAD: u8> Config for Arrays<N, K, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS, AHEAD>
+impl<N, const K: usize, O, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize, const AHEAD: u8, const VIEW: usize> Config for Arrays<N, K, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS, AHEAD, VIEW>
 where
     N: Number + 'static,
     O: Objects<N> + 'static,
@@ -215,6 +228,7 @@ where
     type Solids = S;
     type Palette = P;
     type PerObject<T: Copy> = [T; K];
+    type ViewTable<T: Copy> = [T; VIEW];
     type PerObjectPerOtherLight<T: Copy> = [[T; K]; OTHER_LIGHTS];
     type OtherLights<T: Clone> = heapless::Vec<T, OTHER_LIGHTS>;
     type PerObjectList<T: Clone> = heapless::Vec<T, K>;
@@ -231,6 +245,7 @@ where
     const HIERARCHY_AHEAD: bool = AHEAD & AHEAD_HIERARCHY != 0;
     const GRID_AHEAD: bool = AHEAD & AHEAD_GRID != 0;
     const SHADOW_TABLES_AHEAD: bool = AHEAD & AHEAD_SHADOW_TABLES != 0;
+    const VIEW_AHEAD: bool = AHEAD & AHEAD_VIEW != 0;
 }
 
 /// The space grid's cell entries per object on average at most (else no grid).

@@ -49,7 +49,7 @@ use semihosting::{print, HostFile};
 
 /// Sized by the scene: exactly its objects, which stay in flash with its solids and its look-up
 /// table; its grid's entries, its ray tree's depth and its row of antialiasing corners.
-type PreparedScene = Prepared<Arrays<scene::Number, { scene::OBJECT_COUNT }, FlashObjects, { scene::GRID_ENTRIES_PER_OBJECT }, { scene::TREE_DEPTH }, { scene::ANTIALIAS_ROW }, FlashSolids, FlashPalette, { scene::OTHER_LIGHTS }, { scene::MADE_AHEAD }>>;
+type PreparedScene = Prepared<Arrays<scene::Number, { scene::OBJECT_COUNT }, FlashObjects, { scene::GRID_ENTRIES_PER_OBJECT }, { scene::TREE_DEPTH }, { scene::ANTIALIAS_ROW }, FlashSolids, FlashPalette, { scene::OTHER_LIGHTS }, { scene::MADE_AHEAD }, { scene::VIEW_TABLE_OBJECTS }>>;
 
 /// The scene's objects in flash, where the build put them prepared ahead (`OBJECTS_AHEAD`):
 /// they take no RAM (only each object's eye, which depends on the view, is in the scene).

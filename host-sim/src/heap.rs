@@ -98,6 +98,7 @@ impl<N: Number> Config for Heap<N> {
     type Solids = Growing<PreparedSolidNode<N>>;
     type Palette = microtrace::config::OwnedPalette;
     type PerObject<T: Copy> = Boxed<T>;
+    type ViewTable<T: Copy> = Boxed<T>;
     type PerObjectPerOtherLight<T: Copy> = Boxed<T>;
     type OtherLights<T: Clone> = heapless::Vec<T, { microtrace::model::MAX_LIGHTS - 1 }>;
     type PerObjectList<T: Clone> = Growing<T>;

@@ -193,22 +193,22 @@ fn number_after(text: &str, label: &str) -> u64 {
     digits.parse().unwrap_or_else(|_| panic!("no number after {label:?} in {text}"))
 }
 
-/// 512 spheres (the most the build prepares ahead) in `fixed` (Q32.32, 8 bytes a number) need
-/// about 82 KB: 70 KB of prepared scene and the budget's 12 KB of stack (nothing on the stack
-/// grows with the objects: a hierarchy in flash finds the shadow rays' blockers, the screen grid
-/// is in flash): more than either board's 64 KB (in `f32` they fit since the grid and the
-/// shadow tables went to flash: 43,064 bytes of statics, 4,400 of peak stack). The build stops
-/// in the firmware's compile-time RAM check, with the parts that add up.
+/// 512 spheres (the most the build prepares ahead) rendered at 320x240 into a framebuffer need
+/// about 90 KB: 75 KB of framebuffer, the budget's 12 KB of stack and the prepared scene, which
+/// no longer grows with the objects (every table of the view, the grid, the shadow tables and
+/// the hierarchy are made at build time, in flash): more than either board's 64 KB. The build
+/// stops in the firmware's compile-time RAM check, with the parts that add up.
 fn a_scene_too_large_fails_at_build_time(board: Board) {
     let scene = many_spheres(TOO_MANY);
-    let options = FirmwareOptions::new(&scene, board, "fixed", work_dir(&format!("{}-too-large", board.name())));
+    let mut options = FirmwareOptions::new(&scene, board, "f32", work_dir(&format!("{}-too-large", board.name())));
+    options.framebuffer = true;
+    options.size = (320, 240);
     let error = firmware::run(&options).unwrap_err();
     let context = format!("{}: {error}", board.name());
     println!("{}", error.lines().next().unwrap_or_default());
     let line = error.lines().next().unwrap_or_default();
     assert!(line.starts_with(&format!("building the firmware failed: {}: needs ", scene.display())), "{context}");
-    // No framebuffer: the rows are streamed (firmware/src/display.rs); no display copy either.
-    assert!(line.contains(&format!(" for {TOO_MANY} objects in fixed, framebuffer 0 for 128x64, stack reserve ")), "{context}");
+    assert!(line.contains(&format!(" for {TOO_MANY} objects in f32, framebuffer 76,800 for 320x240, stack reserve ")), "{context}");
     assert!(line.contains(&format!("), the {} has 65,536 (firmware/README.md, \"When it fails\")", board.name())), "{context}");
     assert!(!error.contains("will not fit in region"), "{context}: the linker ran");
 
@@ -216,12 +216,11 @@ fn a_scene_too_large_fails_at_build_time(board: Board) {
     let parts = ["the prepared scene ", "framebuffer ", "stack reserve "].map(|label| number_after(line, label));
     assert_eq!(parts.iter().sum::<u64>(), needed, "{context}: the parts do not add up");
     assert!(needed > 64 * 1024, "{context}");
-    // No framebuffer; the stack reserve is the budget's 12 KB.
-    assert_eq!(parts[1], 0, "{context}");
+    // A byte a pixel; the stack reserve is the budget's 12 KB.
+    assert_eq!(parts[1], 320 * 240, "{context}");
     assert_eq!(parts[2], 12 * 1024, "{context}");
-    // The prepared scene grows with the objects (their eyes and acceleration structures; the
-    // objects themselves stay in flash): about 136 bytes each in fixed.
-    assert!(parts[0] > TOO_MANY as u64 * 120, "{context}");
+    // The prepared scene does not grow with the objects: all of it is in flash.
+    assert!(parts[0] < 2 * 1024, "{context}");
 }
 
 /// Spheres too many for either board's RAM.
@@ -238,7 +237,7 @@ fn a_scene_too_large_for_the_mps2_an386_fails_at_build_time() {
 }
 
 /// A real scene whose statics leave too little stack (the RAM check's reserve set to 0): 512
-/// spheres with a framebuffer of 168x124 (62 KB of statics leave 1,632 bytes of stack; the
+/// spheres with a framebuffer of 256x246 (64 KB of statics leave 1,424 bytes of stack; the
 /// render's peak is about 2.2 KB): the stack overflows, a frame jumping past the bottom of RAM
 /// at once (a guard of a few words would miss it), and the run says so. On the lm3s6965evb this
 /// is what used to hang until the timeout.
@@ -248,7 +247,7 @@ fn a_scene_that_overflows_its_stack_says_so(board: Board, objects: usize) {
     let mut options = FirmwareOptions::new(&scene, board, "f32", &out);
     options.stack_reserve = Some(0);
     options.framebuffer = true;
-    options.size = (168, 124);
+    options.size = (256, 246);
     options.timeout = Duration::from_secs(60);
     let error = firmware::run(&options).unwrap_err();
     let context = format!("{} with {objects} spheres: {error}", board.name());

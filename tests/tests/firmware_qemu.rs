@@ -416,6 +416,13 @@ fn snooker_fits_the_lm3s811evb() {
     let objects = microtrace::parser::parse::<64>(&std::fs::read(scene_path("snooker.mts")).unwrap()).unwrap().objects.len();
     assert_eq!((cones, blockers), ((objects * cone) as u64, (objects * set) as u64), "snooker: the shadow tables in flash are not one cone and one set for each of its {objects} objects");
     assert!(!symbols.iter().any(|symbol| symbol.demangled.contains("build_shadow_tables")), "snooker: the shadow tables' building code is linked");
+    // So were the tables that depend on the view: each object's eye (12 bytes in f32), extent
+    // (16) and the test order (2) are in flash, and nothing that builds them is linked (the
+    // capsules seen from the eye, `ScreenMap`).
+    for (table, each) in [("::VIEW_EYES_AHEAD", 12), ("::VIEW_EXTENTS_AHEAD", 16), ("::VIEW_ORDER_AHEAD", 2)] {
+        assert_eq!(bytes(table), Some((objects * each) as u64), "snooker: {table} is not {each} bytes for each of its {objects} objects in flash");
+    }
+    assert!(!symbols.iter().any(|symbol| symbol.demangled.contains("ScreenMap")), "snooker: the view's building code is linked");
 }
 
 /// The lattice (54 objects) fits the lm3s811evb too, now that nothing on its stack grows with
@@ -443,10 +450,20 @@ fn fits_the_lm3s811evb(name: &str) -> FirmwareRun {
 /// read back from QEMU's screen; all within its 8 KB of RAM.
 #[test]
 fn snooker_shows_on_the_lm3s811evb_oled() {
+    shows_on_the_lm3s811evb_oled("snooker.mts");
+}
+
+/// The lattice (54 objects) on the OLED too, now that every table of the view is in flash.
+#[test]
+fn the_lattice_shows_on_the_lm3s811evb_oled() {
+    shows_on_the_lm3s811evb_oled("lattice.mts");
+}
+
+fn shows_on_the_lm3s811evb_oled(name: &str) {
     let size = xtask::firmware::LM3S811EVB_OLED;
-    let path = scene_path("snooker.mts");
+    let path = scene_path(name);
     let text = std::fs::read(&path).unwrap();
-    let parsed: Result<SceneDescription<CAPACITY>, _> = microtrace::parser::parse_file("snooker.mts", &text);
+    let parsed: Result<SceneDescription<CAPACITY>, _> = microtrace::parser::parse_file(name, &text);
     let mut description = parsed.unwrap();
     description.fit_to_size(size.0, size.1);
     let scene = Scene::<f32, CAPACITY>::prepare(&description).unwrap();
@@ -455,22 +472,22 @@ fn snooker_shows_on_the_lm3s811evb_oled() {
     render(&scene, Pga, Whole, &mut frame, &mut Statistics::default());
     let dots = one_bit_dots(&expected, size, &description.palette);
 
-    let out = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("firmware").join("lm3s811evb-snooker-96x16-f32");
+    let out = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("firmware").join(format!("lm3s811evb-{}-96x16-f32", name.trim_end_matches(".mts")));
     let mut options = FirmwareOptions::new(path, Board::Lm3s811evb, "f32", out);
     options.size = size;
-    let run = firmware::run(&options).unwrap_or_else(|error| panic!("snooker at 96x16 on the lm3s811evb: {error}"));
+    let run = firmware::run(&options).unwrap_or_else(|error| panic!("{name} at 96x16 on the lm3s811evb: {error}"));
     println!("{}", firmware::summary(&run, &options));
-    assert_eq!(std::fs::read(&run.framebuffer).unwrap(), expected, "snooker at 96x16 on the lm3s811evb: the framebuffer differs from the host render");
+    assert_eq!(std::fs::read(&run.framebuffer).unwrap(), expected, "{name} at 96x16 on the lm3s811evb: the framebuffer differs from the host render");
     let oled = xtask::oled::read_png(run.oled_png.as_ref().expect("the lm3s811evb's OLED was not captured")).unwrap();
     assert_eq!((oled.width, oled.height), (usize::from(size.0), usize::from(size.1)));
     let shown: Vec<bool> = oled.pixels.iter().map(|grey| *grey == 255).collect();
     assert!(oled.pixels.iter().all(|grey| *grey == 0 || *grey == 255), "the OLED shows only black and white dots");
     let differing = shown.iter().zip(&dots).filter(|(a, b)| a != b).count();
-    assert_eq!(differing, 0, "{differing} of the OLED's dots differ from the host's error diffusion");
+    assert_eq!(differing, 0, "{name}: {differing} of the OLED's dots differ from the host's error diffusion");
     assert!(dots.iter().any(|dot| *dot) && dots.iter().any(|dot| !*dot), "a picture of dots, not a blank screen");
-    linked_code_is_clean("snooker at 96x16", Board::Lm3s811evb, &run.numbers);
+    linked_code_is_clean(&format!("{name} at 96x16"), Board::Lm3s811evb, &run.numbers);
     let (ram, stack) = (run.numbers["static_ram_bytes"], run.numbers["stack_peak_bytes"]);
-    assert!(ram + stack <= 8 * 1024, "snooker at 96x16 with the OLED: {ram} bytes of static RAM and {stack} of peak stack exceed 8,192");
+    assert!(ram + stack <= 8 * 1024, "{name} at 96x16 with the OLED: {ram} bytes of static RAM and {stack} of peak stack exceed 8,192");
 }
 
 /// The dots of the core's error diffusion over each palette entry's luma, row by row as the

@@ -51,14 +51,14 @@ pub struct Acceleration<C: Config> {
     tuning: Tuning,
     screen: Screen,
     /// Test order: sorted by depth bound with Sortlist, object order otherwise.
-    order: C::PerObject<C::Index>,
-    extents: C::PerObject<Extent>,
+    order: C::ViewTable<C::Index>,
+    extents: C::ViewTable<Extent>,
     /// Lower bound of the `t` of any hit on each object (`−N::MAX`: none known).
-    near: C::PerObject<C::Number>,
+    near: C::ViewTable<C::Number>,
     /// Each object's silhouette as a stadium (our tuning), for the grid and the fill.
-    stadiums: C::PerObject<Option<capsule::Stadium>>,
+    stadiums: C::ViewTable<Option<capsule::Stadium>>,
     #[cfg(feature = "acceleration-tables")]
-    shadow: C::PerObject<ShadowBound<C::Number>>,
+    shadow: C::ViewTable<ShadowBound<C::Number>>,
     /// The shadow rays' hierarchy (`Config::HIERARCHY`, more than 128 objects): its nodes, the
     /// objects of its leaves, and how many nodes are built (0: none).
     #[cfg(feature = "acceleration-tables")]
@@ -79,6 +79,23 @@ pub struct Acceleration<C: Config> {
     /// flash; `Config::SHADOW_TABLES_AHEAD`): a render uses them instead of building its own.
     /// An `Option` so that an unprepared scene is all zeros (`.bss`, not an image in flash).
     shadow_tables_ahead: Option<&'static [ShadowTablesAhead<'static, C::Number>]>,
+    /// The tables above made ahead for the view (the firmware's, in flash;
+    /// `Config::VIEW_AHEAD`), read in their place.
+    view_ahead: Option<ViewAhead<'static, C::Number, C::Index>>,
+}
+
+/// The per-object tables that depend on the view, made ahead (the firmware's, at build time,
+/// in flash): the test order and each object's extent, depth bound, stadium and shadow capsule
+/// as [`Acceleration::rebuild_from_bounds`] makes them, and its eye in its own space as the
+/// scene places it — bit for bit what the chip's preparation would make.
+#[derive(Clone, Copy, Debug)]
+pub struct ViewAhead<'a, N, I> {
+    pub order: &'a [I],
+    pub extents: &'a [Extent],
+    pub near: &'a [N],
+    pub stadiums: &'a [Option<capsule::Stadium>],
+    pub shadow: &'a [ShadowBound<N>],
+    pub eyes: &'a [Vector3<N>],
 }
 
 impl<C: Config> core::fmt::Debug for Acceleration<C> {
@@ -111,11 +128,12 @@ impl<C: Config> Clone for Acceleration<C> {
             grid: self.grid.clone(),
             grid_ahead: self.grid_ahead,
             shadow_tables_ahead: self.shadow_tables_ahead,
+            view_ahead: self.view_ahead,
         }
     }
 }
 
-impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize, const AHEAD: u8> Acceleration<Arrays<N, K, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS, AHEAD>>
+impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize, const AHEAD: u8, const VIEW: usize> Acceleration<Arrays<N, K, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS, AHEAD, VIEW>>
 where
     S: crate::config::SolidStorage<N> + 'static,
     P: crate::config::PaletteStorage + 'static,
@@ -127,12 +145,12 @@ where
         optimizations: Optimizations::NONE,
         tuning: Tuning::THESIS,
         screen: Screen::UNSET,
-        order: [0; K],
-        extents: [Extent { first_column: 0, last_column: 0, first_row: 0, last_row: 0, diagonal: [0; 4] }; K],
-        near: [N::ZEROED; K],
-        stadiums: [None; K],
+        order: [0; VIEW],
+        extents: [Extent { first_column: 0, last_column: 0, first_row: 0, last_row: 0, diagonal: [0; 4] }; VIEW],
+        near: [N::ZEROED; VIEW],
+        stadiums: [None; VIEW],
         #[cfg(feature = "acceleration-tables")]
-        shadow: [ShadowBound::UNSET; K],
+        shadow: [ShadowBound::UNSET; VIEW],
         #[cfg(feature = "acceleration-tables")]
         hierarchy: [],
         #[cfg(feature = "acceleration-tables")]
@@ -144,6 +162,7 @@ where
         grid: Grid::UNSET,
         grid_ahead: None,
         shadow_tables_ahead: None,
+        view_ahead: None,
     };
 }
 
@@ -174,12 +193,12 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
             optimizations: Optimizations::NONE,
             tuning: Tuning::THESIS,
             screen: Screen::UNSET,
-            order: C::PerObject::filled(count, C::Index::default()),
-            extents: C::PerObject::filled(count, Extent { first_column: 0, last_column: 0, first_row: 0, last_row: 0, diagonal: [0; 4] }),
-            near: C::PerObject::filled(count, N::ZERO),
-            stadiums: C::PerObject::filled(count, None),
+            order: C::ViewTable::filled(count, C::Index::default()),
+            extents: C::ViewTable::filled(count, Extent { first_column: 0, last_column: 0, first_row: 0, last_row: 0, diagonal: [0; 4] }),
+            near: C::ViewTable::filled(count, N::ZERO),
+            stadiums: C::ViewTable::filled(count, None),
             #[cfg(feature = "acceleration-tables")]
-            shadow: C::PerObject::filled(count, ShadowBound::UNSET),
+            shadow: C::ViewTable::filled(count, ShadowBound::UNSET),
             #[cfg(feature = "acceleration-tables")]
             hierarchy: C::Hierarchy::filled(if C::HIERARCHY { REFERENCES_PER_OBJECT * count } else { 0 }, BvhNode::UNSET),
             #[cfg(feature = "acceleration-tables")]
@@ -191,7 +210,8 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
             grid: Grid::inactive(count),
             grid_ahead: None,
             shadow_tables_ahead: None,
-            }
+            view_ahead: None,
+        }
     }
 
     /// The thesis's `preprocess` for the optimizations (digest §8.2).
@@ -411,6 +431,77 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
         self.shadow_tables_ahead.unwrap_or(&[])
     }
 
+    /// Holds the per-object tables made ahead for the view the scene is prepared for (the
+    /// firmware's, in flash), in place of [`Acceleration::rebuild_from_bounds`]: with
+    /// [`Config::VIEW_AHEAD`] they are read in place of the tables here, which hold nothing.
+    pub fn hold_view_ahead(&mut self, camera: &Camera<N>, optimizations: Optimizations, view: ViewAhead<'static, N, C::Index>) {
+        self.count = view.order.len().min(C::Index::MAX);
+        self.optimizations = optimizations;
+        self.tuning = Tuning::IMPROVED;
+        self.screen = if SILHOUETTES { Screen::new(camera) } else { Screen::sized(camera.width(), camera.height()) };
+        #[cfg(feature = "acceleration-tables")]
+        {
+            self.hierarchy_nodes = 0;
+        }
+        self.grid.clear();
+        self.view_ahead = Some(view).filter(|_| C::VIEW_AHEAD);
+    }
+
+    /// The tables that depend on the view as built here, by their parts, with the scene's
+    /// `eyes`: what the firmware's build writes ahead.
+    pub fn view_parts<'a>(&'a self, eyes: &'a [Vector3<N>]) -> ViewAhead<'a, N, C::Index> {
+        let count = self.count;
+        ViewAhead {
+            order: self.order.slots().get(..count).unwrap_or(&[]),
+            extents: self.extents.slots().get(..count).unwrap_or(&[]),
+            near: self.near.slots().get(..count).unwrap_or(&[]),
+            stadiums: self.stadiums.slots().get(..count).unwrap_or(&[]),
+            #[cfg(feature = "acceleration-tables")]
+            shadow: self.shadow.slots().get(..count).unwrap_or(&[]),
+            #[cfg(not(feature = "acceleration-tables"))]
+            shadow: &[],
+            eyes: eyes.get(..count).unwrap_or(&[]),
+        }
+    }
+
+    /// The held tables made ahead for the view (`Config::VIEW_AHEAD`).
+    #[inline]
+    fn view_in_flash(&self) -> Option<&ViewAhead<'static, N, C::Index>> {
+        self.view_ahead.as_ref().filter(|_| C::VIEW_AHEAD)
+    }
+
+    #[inline]
+    fn order_table(&self) -> &[C::Index] {
+        self.view_in_flash().map_or(self.order.slots(), |view| view.order)
+    }
+
+    #[inline]
+    fn extents_table(&self) -> &[Extent] {
+        self.view_in_flash().map_or(self.extents.slots(), |view| view.extents)
+    }
+
+    #[inline]
+    fn near_table(&self) -> &[N] {
+        self.view_in_flash().map_or(self.near.slots(), |view| view.near)
+    }
+
+    #[inline]
+    fn stadiums_table(&self) -> &[Option<capsule::Stadium>] {
+        self.view_in_flash().map_or(self.stadiums.slots(), |view| view.stadiums)
+    }
+
+    #[cfg(feature = "acceleration-tables")]
+    #[inline]
+    fn shadow_table(&self) -> &[ShadowBound<N>] {
+        self.view_in_flash().map_or(self.shadow.slots(), |view| view.shadow)
+    }
+
+    /// Each object's eye made ahead (`Config::VIEW_AHEAD`; empty otherwise).
+    #[inline]
+    pub fn eyes_ahead(&self) -> &'static [Vector3<N>] {
+        self.view_in_flash().map_or(&[], |view| view.eyes)
+    }
+
     /// The grid as built, by its parts (`None`: none active): what the firmware's build writes
     /// ahead.
     pub fn grid_parts(&self) -> Option<GridAhead<'_, N, C::Index>> {
@@ -420,7 +511,7 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
     /// Every object, in test order (sorted by depth bound with Sortlist).
     #[inline]
     pub fn order(&self) -> &[C::Index] {
-        self.order.slots().get(..self.count).unwrap_or(&[])
+        self.order_table().get(..self.count).unwrap_or(&[])
     }
 
     pub fn tuning(&self) -> Tuning {
@@ -431,7 +522,7 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
     /// are not computed).
     #[inline]
     pub fn in_extent(&self, object: usize, pixel: PixelPosition) -> bool {
-        self.extents.slots().get(object).is_some_and(|extent| {
+        self.extents_table().get(object).is_some_and(|extent| {
             extent.contains(pixel.column, pixel.row)
                 && (!self.tuning.tight_silhouettes || extent.diagonals_contain(pixel.column, pixel.row, self.screen.height))
         })
@@ -458,26 +549,26 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
     /// Extents: whether the pixel lies outside the object's rectangle (skip it untested).
     #[inline]
     pub fn outside_extent(&self, object: usize, pixel: PixelPosition) -> bool {
-        let Some(extent) = self.extents.slots().get(object) else { return false };
+        let Some(extent) = self.extents_table().get(object) else { return false };
         (self.optimizations.extents && !extent.contains(pixel.column, pixel.row))
             || (self.tuning.tight_silhouettes
                 && (self.optimizations.extents || self.optimizations.grid)
                 && (!extent.diagonals_contain(pixel.column, pixel.row, self.screen.height)
-                    || self.stadiums.slots().get(object).copied().flatten().is_some_and(|stadium| !stadium.contains(pixel.column, pixel.row))))
+                    || self.stadiums_table().get(object).copied().flatten().is_some_and(|stadium| !stadium.contains(pixel.column, pixel.row))))
     }
 
     /// Sortlist: whether every hit on `object` (and so on every later candidate) lies beyond
     /// the nearest hit so far, `t`. Strict, so an equal `t` is still tested.
     #[inline]
     pub fn beyond(&self, object: usize, t: N) -> bool {
-        self.sorts() && self.near.slots().get(object).is_some_and(|near| *near > t)
+        self.sorts() && self.near_table().get(object).is_some_and(|near| *near > t)
     }
 
     /// The object's view from the light for the per-render shadow table (always meeting
     /// every shadow ray without the `acceleration-tables` feature).
     pub fn light_footprint(&self, object: usize, light: shadow_culling::LightPosition<N>) -> shadow_culling::LightFootprint<N> {
         #[cfg(feature = "acceleration-tables")]
-        if let Some(bound) = self.shadow.slots().get(object) {
+        if let Some(bound) = self.shadow_table().get(object) {
             return bound.footprint(light);
         }
         let _ = (object, light);
@@ -487,7 +578,7 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
     #[inline]
     pub fn may_shadow(&self, object: usize, point: Vector3<N>, direction: Vector3<N>, length: N) -> bool {
         #[cfg(feature = "acceleration-tables")]
-        if let Some(bound) = self.shadow.slots().get(object) {
+        if let Some(bound) = self.shadow_table().get(object) {
             return bound.may_block(point, direction, length);
         }
         let _ = (object, point, direction, length);
@@ -527,16 +618,16 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
     /// Sortlist's lower bound of `t` for the object, as the render uses it (`None`: none known,
     /// or Sortlist off).
     pub fn near_bound(&self, object: usize) -> Option<N> {
-        self.near.slots().get(object).copied().filter(|near| *near != -N::MAX)
+        self.near_table().get(object).copied().filter(|near| *near != -N::MAX)
     }
 
     /// The object's silhouette as a stadium, when it has one (our tuning).
     pub fn stadium(&self, object: usize) -> Option<capsule::Stadium> {
-        self.stadiums.slots().get(object).copied().flatten()
+        self.stadiums_table().get(object).copied().flatten()
     }
 
     pub fn extent(&self, object: usize) -> Option<Extent> {
-        self.extents.slots().get(object).copied()
+        self.extents_table().get(object).copied()
     }
 
     /// Holds a hierarchy built ahead ([`hierarchy_ahead`]; the firmware's, in flash) for the

@@ -104,7 +104,7 @@ impl<C: Config> Clone for Grid<C> {
     }
 }
 
-impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize, const AHEAD: u8> Grid<Arrays<N, K, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS, AHEAD>>
+impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize, const AHEAD: u8, const VIEW: usize> Grid<Arrays<N, K, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS, AHEAD, VIEW>>
 where
     S: crate::config::SolidStorage<N> + 'static,
     P: crate::config::PaletteStorage + 'static,

@@ -26,7 +26,7 @@ pub mod solid_extents;
 pub mod space_grid;
 pub mod sortlist;
 
-pub use acceleration::{window_corners, Acceleration, ObjectBounds, Tuning};
+pub use acceleration::{window_corners, Acceleration, ObjectBounds, Tuning, ViewAhead};
 #[cfg(feature = "acceleration-tables")]
 pub use acceleration::{hierarchy_ahead, hierarchy_references, HierarchyScratch, HIERARCHY_AHEAD_ABOVE};
 pub use acceleration::HIERARCHY_ABOVE;

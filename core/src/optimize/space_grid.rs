@@ -56,7 +56,7 @@ impl<C: Config> Clone for SpaceGrid<C> {
     }
 }
 
-impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize, const AHEAD: u8> SpaceGrid<Arrays<N, K, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS, AHEAD>>
+impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize, const AHEAD: u8, const VIEW: usize> SpaceGrid<Arrays<N, K, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS, AHEAD, VIEW>>
 where
     S: crate::config::SolidStorage<N> + 'static,
     P: crate::config::PaletteStorage + 'static,

@@ -14,7 +14,7 @@ use crate::geometry::{Ray, Vector3};
 use crate::number::Number;
 use crate::optimize::grid::entry_covers;
 use crate::config::Config;
-use crate::storage::{Index, Table};
+use crate::storage::Index;
 use crate::model::Object;
 use crate::scene::Prepared;
 use crate::shapes::Interval;
@@ -60,7 +60,7 @@ pub fn nearest_hit_cached<N: Number, C: Config<Number = N>>(
         // Tested unbounded, before anything else: its result is final, so the loop skips it.
         if let Some(object) = scene.objects.get(index) {
             statistics.ro_tests += 1;
-            if let Some(hit) = hit_object(scene, index, object, ray, &local_ray(object, scene.eyes.slots().get(index).filter(|_| from_eye), ray), Interval::unbounded(), Some(pixel), statistics) {
+            if let Some(hit) = hit_object(scene, index, object, ray, &local_ray(object, scene.eyes().get(index).filter(|_| from_eye), ray), Interval::unbounded(), Some(pixel), statistics) {
                 statistics.ro_hits += 1;
                 nearest = Some(hit);
             }
@@ -99,7 +99,7 @@ pub fn nearest_hit_cached<N: Number, C: Config<Number = N>>(
         };
         let Some(object) = scene.objects.get(index) else { return true };
         statistics.ro_tests += 1;
-        if let Some(hit) = hit_object(scene, index, object, ray, &local_ray(object, scene.eyes.slots().get(index).filter(|_| from_eye), ray), interval, Some(pixel), statistics) {
+        if let Some(hit) = hit_object(scene, index, object, ray, &local_ray(object, scene.eyes().get(index).filter(|_| from_eye), ray), interval, Some(pixel), statistics) {
             statistics.ro_hits += 1;
             *nearest = Some(hit);
         }

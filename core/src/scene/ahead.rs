@@ -11,7 +11,7 @@ use crate::camera::Camera;
 use crate::geometry::Vector3;
 use crate::number::Number;
 use crate::optimize::bounding_sphere::BoundingSphere;
-use crate::optimize::ObjectBounds;
+use crate::optimize::{ObjectBounds, ViewAhead};
 use crate::optimize::grid::GridAhead;
 use crate::optimize::shadow_culling::{BlockerSet, DirectionChord, ShadowTablesAhead};
 #[cfg(feature = "acceleration-tables")]
@@ -60,6 +60,10 @@ pub struct PreparedAhead<'a, N, I = u16> {
     /// The lights' shadow tables for this view, one per light (empty: none made; the render's
     /// `render::shadow_tables::tables_ahead` makes them on the host): the render builds none.
     pub shadow_tables: &'a [ShadowTablesAhead<'a, N>],
+    /// The per-object tables that depend on the view, made for this view
+    /// ([`crate::optimize::Acceleration::view_parts`] of the scene prepared on the host from the
+    /// same bounds): preparation makes none, and `bounds` is then empty.
+    pub view: Option<ViewAhead<'a, N, I>>,
 }
 
 impl<N: Number, C: Config<Number = N>> Prepared<C> {
@@ -102,12 +106,18 @@ impl<N: Number, C: Config<Number = N>> Prepared<C> {
         if self.objects.len() > C::MAX_OBJECTS {
             return Err(too_many(C::MAX_OBJECTS));
         }
-        self.place_eyes();
         #[cfg(feature = "acceleration-tables")]
         self.acceleration.hold_hierarchy_ahead(parts.hierarchy);
         self.acceleration.hold_grid_ahead(parts.grid);
         self.acceleration.hold_shadow_tables_ahead(parts.shadow_tables);
-        self.acceleration.rebuild_from_bounds(&self.camera, self.optimizations, parts.bounds);
+        match parts.view.filter(|_| C::VIEW_AHEAD) {
+            // Made ahead for this view: nothing to place or build.
+            Some(view) => self.acceleration.hold_view_ahead(&self.camera, self.optimizations, view),
+            None => {
+                self.place_eyes();
+                self.acceleration.rebuild_from_bounds(&self.camera, self.optimizations, parts.bounds);
+            }
+        }
         Ok(())
     }
 }
@@ -122,6 +132,7 @@ pub fn write_prepared_ahead<N: Number, C: Config<Number = N>>(
     hierarchy: Hierarchy<'_, N>,
     grid: Option<GridAhead<'_, N, u16>>,
     shadow_tables: &[ShadowTablesAhead<'_, N>],
+    view: Option<ViewAhead<'_, N, u16>>,
     out: &mut dyn Write,
 ) -> fmt::Result {
     let count = scene.objects.len();
@@ -155,6 +166,8 @@ pub fn write_prepared_ahead<N: Number, C: Config<Number = N>>(
         }
     }
     writeln!(out, "];")?;
+    // With the view's tables made ahead the chip never reads the bounds: none are written.
+    let bounds = if view.is_some() { &[] } else { bounds };
     writeln!(out, "pub static BOUNDS_AHEAD: [microtrace::optimize::ObjectBounds<Number>; {}] = [", bounds.len())?;
     for b in bounds {
         write!(out, "    microtrace::optimize::ObjectBounds {{ primitive: ")?;
@@ -165,16 +178,9 @@ pub fn write_prepared_ahead<N: Number, C: Config<Number = N>>(
         vector(out, b.capsule.end)?;
         write!(out, ", radius: ")?;
         b.capsule.radius.write_literal(out)?;
-        write!(out, " }}, shadow: microtrace::optimize::shadow_culling::ShadowBound {{ centre: ")?;
-        let s = &b.shadow;
-        vector(out, s.centre)?;
-        write!(out, ", axis: ")?;
-        vector(out, s.axis)?;
-        for (name, value) in [("half", s.half), ("radius", s.radius), ("reach", s.reach)] {
-            write!(out, ", {name}: ")?;
-            value.write_literal(out)?;
-        }
-        writeln!(out, " }} }},")?;
+        write!(out, " }}, shadow: ")?;
+        shadow_bound_literal(&b.shadow, out)?;
+        writeln!(out, " }},")?;
     }
     writeln!(out, "];")?;
     write_tree_ahead(scene, out)?;
@@ -186,6 +192,7 @@ pub fn write_prepared_ahead<N: Number, C: Config<Number = N>>(
     let hierarchy = if write_hierarchy(hierarchy, out)? { "Some(HIERARCHY_AHEAD)" } else { "None" };
     let grid = if write_grid(grid, out)? { "Some(GRID_AHEAD)" } else { "None" };
     write_shadow_tables(shadow_tables, out)?;
+    let view = if write_view(view, out)? { "Some(VIEW_AHEAD)" } else { "None" };
     let camera = &scene.camera;
     let (origin, spacing, view_plane) = camera.sampling();
     let v = camera.viewport;
@@ -245,7 +252,7 @@ pub fn write_prepared_ahead<N: Number, C: Config<Number = N>>(
         " }},\n    background: {},\n    shadows: {},\n    dither: {},\n    optimizations: microtrace::model::Optimizations {{ pixelbuffer: {}, extents: {}, grid: {}, sortlist: {} }},",
         scene.background, scene.shadows, scene.dither, o.pixelbuffer, o.extents, o.grid, o.sortlist
     )?;
-    writeln!(out, "    palette: &PALETTE_AHEAD,\n    bounds: &BOUNDS_AHEAD,\n    hierarchy: {hierarchy},\n    grid: {grid},\n    shadow_tables: &SHADOW_TABLES_AHEAD,\n}};")
+    writeln!(out, "    palette: &PALETTE_AHEAD,\n    bounds: &BOUNDS_AHEAD,\n    hierarchy: {hierarchy},\n    grid: {grid},\n    shadow_tables: &SHADOW_TABLES_AHEAD,\n    view: {view},\n}};")
 }
 
 /// `GRID_AHEAD` and its tables (the cells' starts, the entries and their depth bounds), if
@@ -288,6 +295,61 @@ fn write_shadow_tables<N: Number>(tables: &[ShadowTablesAhead<'_, N>], out: &mut
         writeln!(out, "    microtrace::optimize::shadow_culling::ShadowTablesAhead {{ light_cones: &SHADOW_CONES_AHEAD_{light}, blockers: &SHADOW_BLOCKERS_AHEAD_{light} }},")?;
     }
     writeln!(out, "];")
+}
+
+/// `VIEW_AHEAD` and its tables, if the view's tables are made ahead; whether they are.
+fn write_view<N: Number>(view: Option<ViewAhead<'_, N, u16>>, out: &mut dyn Write) -> Result<bool, fmt::Error> {
+    let Some(view) = view else { return Ok(false) };
+    writeln!(out, "pub static VIEW_ORDER_AHEAD: [u16; {}] = {:?};", view.order.len(), view.order)?;
+    writeln!(out, "pub static VIEW_EXTENTS_AHEAD: [microtrace::model::Extent; {}] = [", view.extents.len())?;
+    for extent in view.extents {
+        write!(out, "    ")?;
+        extent_literal(extent, out)?;
+        writeln!(out, ",")?;
+    }
+    writeln!(out, "];")?;
+    write!(out, "pub static VIEW_NEAR_AHEAD: [Number; {}] = ", view.near.len())?;
+    numbers(out, view.near)?;
+    writeln!(out, ";")?;
+    writeln!(out, "pub static VIEW_STADIUMS_AHEAD: [Option<microtrace::optimize::capsule::Stadium>; {}] = [", view.stadiums.len())?;
+    for stadium in view.stadiums {
+        match stadium {
+            Some(stadium) => writeln!(out, "    Some(microtrace::optimize::capsule::Stadium {{ ends: {:?}, radius: {} }}),", stadium.ends, stadium.radius)?,
+            None => writeln!(out, "    None,")?,
+        }
+    }
+    writeln!(out, "];")?;
+    writeln!(out, "pub static VIEW_SHADOW_AHEAD: [microtrace::optimize::shadow_culling::ShadowBound<Number>; {}] = [", view.shadow.len())?;
+    for bound in view.shadow {
+        write!(out, "    ")?;
+        shadow_bound_literal(bound, out)?;
+        writeln!(out, ",")?;
+    }
+    writeln!(out, "];")?;
+    writeln!(out, "pub static VIEW_EYES_AHEAD: [microtrace::geometry::Vector3<Number>; {}] = [", view.eyes.len())?;
+    for eye in view.eyes {
+        write!(out, "    ")?;
+        vector(out, *eye)?;
+        writeln!(out, ",")?;
+    }
+    writeln!(out, "];")?;
+    writeln!(
+        out,
+        "pub const VIEW_AHEAD: microtrace::optimize::ViewAhead<'static, Number, u16> = microtrace::optimize::ViewAhead {{ order: &VIEW_ORDER_AHEAD, extents: &VIEW_EXTENTS_AHEAD, near: &VIEW_NEAR_AHEAD, stadiums: &VIEW_STADIUMS_AHEAD, shadow: &VIEW_SHADOW_AHEAD, eyes: &VIEW_EYES_AHEAD }};"
+    )?;
+    Ok(true)
+}
+
+fn shadow_bound_literal<N: Number>(bound: &crate::optimize::shadow_culling::ShadowBound<N>, out: &mut dyn Write) -> fmt::Result {
+    write!(out, "microtrace::optimize::shadow_culling::ShadowBound {{ centre: ")?;
+    vector(out, bound.centre)?;
+    write!(out, ", axis: ")?;
+    vector(out, bound.axis)?;
+    for (name, value) in [("half", bound.half), ("radius", bound.radius), ("reach", bound.reach)] {
+        write!(out, ", {name}: ")?;
+        value.write_literal(out)?;
+    }
+    write!(out, " }}")
 }
 
 fn direction_chord<N: Number>(cone: &DirectionChord<N>, out: &mut dyn Write) -> fmt::Result {

@@ -89,8 +89,9 @@ pub struct Prepared<C: Config> {
     /// A perspective view's eye in each object's space (`object_from_world.point(eye)`, the
     /// same bits as transforming it per ray), indexed like `objects`: every primary ray starts
     /// there, so a ray–object test transforms only the direction. Zero for a parallel view.
-    /// It depends on the view, so it is kept apart from the objects (which may be in flash).
-    pub eyes: C::PerObject<Vector3<C::Number>>,
+    /// It depends on the view, so it is kept apart from the objects (which may be in flash);
+    /// made ahead with the view's other tables where they are (read through [`Prepared::eyes`]).
+    pub eyes: C::ViewTable<Vector3<C::Number>>,
     pub camera: Camera<C::Number>,
     /// The first light (the thesis's only one).
     pub light: PreparedLight<C::Number>,
@@ -137,7 +138,7 @@ impl<C: Config> core::fmt::Debug for Prepared<C> {
     }
 }
 
-impl<N: Number + 'static, const MAX_OBJECTS: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize, const AHEAD: u8> Prepared<Arrays<N, MAX_OBJECTS, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS, AHEAD>>
+impl<N: Number + 'static, const MAX_OBJECTS: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize, const AHEAD: u8, const VIEW: usize> Prepared<Arrays<N, MAX_OBJECTS, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS, AHEAD, VIEW>>
 where
     S: crate::config::SolidStorage<N> + 'static,
     P: crate::config::PaletteStorage + 'static,
@@ -152,7 +153,7 @@ where
         core::mem::forget(solids);
         Self {
             objects,
-            eyes: [Vector3 { x: N::ZEROED, y: N::ZEROED, z: N::ZEROED }; MAX_OBJECTS],
+            eyes: [Vector3 { x: N::ZEROED, y: N::ZEROED, z: N::ZEROED }; VIEW],
             camera: Camera::UNSET,
             light: PreparedLight::Point(Vector3 { x: N::ZEROED, y: N::ZEROED, z: N::ZEROED }),
             light_intensity: N::ZEROED,
@@ -200,7 +201,7 @@ impl<N: Number, C: Config<Number = N>> Prepared<C> {
     pub fn for_objects(objects: C::Objects, count: usize) -> Self {
         Self {
             objects,
-            eyes: C::PerObject::filled(count, Vector3::zero()),
+            eyes: C::ViewTable::filled(count, Vector3::zero()),
             camera: Camera::UNSET,
             light: PreparedLight::Point(Vector3::zero()),
             light_intensity: N::ZERO,
@@ -442,6 +443,17 @@ impl<N: Number, C: Config<Number = N>> Prepared<C> {
         let eye = self.camera.eye();
         for (slot, object) in self.eyes.slots_mut().iter_mut().zip(self.objects.iter()) {
             *slot = eye.map_or(Vector3::zero(), |eye| object.object_from_world.point(eye));
+        }
+    }
+
+    /// Each object's eye in its own space: placed here, or made ahead with the view's tables
+    /// (`Config::VIEW_AHEAD`, the firmware's in flash).
+    #[inline]
+    pub fn eyes(&self) -> &[Vector3<N>] {
+        if C::VIEW_AHEAD {
+            self.acceleration.eyes_ahead()
+        } else {
+            self.eyes.slots()
         }
     }
 
