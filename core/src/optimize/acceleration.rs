@@ -549,10 +549,14 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
     /// Extents: whether the pixel lies outside the object's rectangle (skip it untested).
     #[inline]
     pub fn outside_extent(&self, object: usize, pixel: PixelPosition) -> bool {
+        let tight = self.tuning.tight_silhouettes && (self.optimizations.extents || self.optimizations.grid);
+        // Neither test asked for: no table read (the tables may be in flash, behind a check).
+        if !self.optimizations.extents && !tight {
+            return false;
+        }
         let Some(extent) = self.extents_table().get(object) else { return false };
         (self.optimizations.extents && !extent.contains(pixel.column, pixel.row))
-            || (self.tuning.tight_silhouettes
-                && (self.optimizations.extents || self.optimizations.grid)
+            || (tight
                 && (!extent.diagonals_contain(pixel.column, pixel.row, self.screen.height)
                     || self.stadiums_table().get(object).copied().flatten().is_some_and(|stadium| !stadium.contains(pixel.column, pixel.row))))
     }
