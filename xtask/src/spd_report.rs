@@ -95,12 +95,14 @@ pub fn markdown(rows: &[SpdRow]) -> String {
          board's budget of 256 KB of flash and 64 KB of RAM and the scene's own `optimize`: the small\n\
          scenes of `scenes/spd/` rendered (frame instructions as the firmware report counts them; `host`:\n\
          `=` when the picture is the host's byte for byte), and for a scene the board cannot hold, the\n\
-         RAM the build's check says it needs (firmware/src/ram.rs: the prepared scene's tables and the\n\
-         stack the shadow tables take, per object; the objects themselves stay in flash). A scene of more\n\
-         than 512 objects is sized, not prepared (firmware/build.rs), with the grid's pool at the core's\n\
-         default of 24 entries an object. A scene of more than 128 objects gets a hierarchy of boxes made\n\
-         at build time and kept in flash, and no shadow tables (docs/optimizations.md); below that the\n\
-         shadow tables grow with the objects.\n\n\
+         RAM the build's check says it needs (firmware/src/ram.rs). A scene the build prepares ahead (up\n\
+         to 512 objects) has its objects, screen grid, shadow tables and per-object tables of the view\n\
+         made at build time and kept in flash (a scene of more than 128 objects a hierarchy of boxes\n\
+         instead of shadow tables: docs/optimizations.md); in RAM it keeps only what the ray tree needs\n\
+         per object (its optics, bounding spheres and space grid, for a scene that reflects). A scene\n\
+         of more than 512 objects is sized, not prepared (firmware/build.rs), as if its tables were\n\
+         built on the chip: the prepared scene's tables and the stack the shadow tables take, per\n\
+         object, with the grid's pool at the core's default of 24 entries an object.\n\n\
          | scene | objects | on the chip | frame instructions | instructions per pixel | flash bytes | static RAM bytes | peak stack bytes | host |\n\
          |---|---:|---|---:|---:|---:|---:|---:|---|\n",
     );
