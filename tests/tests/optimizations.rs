@@ -392,7 +392,10 @@ fn acceleration_memory_is_bounded() {
     let f32_54 = core::mem::size_of::<Acceleration<Arrays<f32, 54>>>();
     println!("Acceleration<Arrays<f64, N>>: {per_object} bytes per object + {fixed} bytes per scene; f64 x 54 = {per_scene_54}, f32 x 54 = {f32_54}");
     assert!(per_object <= 450.0, "{per_object} bytes per object");
-    assert!(fixed <= 1024.0, "{fixed} bytes per scene");
+    // Per scene: the screen, the grid's cell starts, and the handles of the tables a firmware
+    // scene holds in flash (the grid's, the hierarchy's, the shadow tables', the view's six
+    // slices: 112 bytes of them on a 64-bit host, 56 on the chip, whose whole scene is 1,128).
+    assert!(fixed <= 1152.0, "{fixed} bytes per scene");
 }
 
 /// The CSG scenes (scenes/csg/): a solid is one object to the optimizations, through the box
