@@ -196,7 +196,7 @@ extern "C" fn microtrace_fault(frame: u32, _exc_return: u32) -> ! {
         }
         print("; it has ");
         print_grouped(top - bottom);
-        print(" bytes, what the RAM leaves below the statics, which it cannot reach (flip-link): use fewer objects or a smaller number type\n");
+        print(" bytes, what the RAM leaves below the statics, which it cannot reach (flip-link): use a smaller framebuffer, fewer objects or a smaller number type\n");
         semihosting::exit(false)
     }
 
