@@ -246,6 +246,16 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
         self.rebuild_with(camera, optimizations, Tuning::IMPROVED, count, |index| bounds.get(index).map(|b| (*b, None)));
     }
 
+    /// What every build of the tables and every hold of tables made ahead sets first: the
+    /// settings, the objects' count and the screen for `camera`, which it returns.
+    fn settle(&mut self, camera: &Camera<N>, optimizations: Optimizations, tuning: Tuning, count: usize) -> Screen {
+        self.screen = if SILHOUETTES { Screen::new(camera) } else { Screen::sized(camera.width(), camera.height()) };
+        self.count = count;
+        self.optimizations = optimizations;
+        self.tuning = tuning;
+        self.screen
+    }
+
     /// The common part: `of(index)` gives an object's bounds and, on the host, its f64
     /// geometry (for the thesis's tuning and the eye-plane clip); `None`: nothing is known (a
     /// singular transform), the object covers the screen.
@@ -257,11 +267,7 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
         count: usize,
         of: impl Fn(usize) -> Option<(ObjectBounds<N>, Option<ObjectGeometry>)>,
     ) {
-        let screen = if SILHOUETTES { Screen::new(camera) } else { Screen::sized(camera.width(), camera.height()) };
-        self.count = count;
-        self.optimizations = optimizations;
-        self.tuning = tuning;
-        self.screen = screen;
+        let screen = self.settle(camera, optimizations, tuning, count);
         for (index, place) in self.order.slots_mut().iter_mut().enumerate() {
             *place = C::Index::new(index);
         }
@@ -435,10 +441,7 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
     /// firmware's, in flash), in place of [`Acceleration::rebuild_from_bounds`]: with
     /// [`Config::VIEW_AHEAD`] they are read in place of the tables here, which hold nothing.
     pub fn hold_view_ahead(&mut self, camera: &Camera<N>, optimizations: Optimizations, view: ViewAhead<'static, N, C::Index>) {
-        self.count = view.order.len().min(C::Index::MAX);
-        self.optimizations = optimizations;
-        self.tuning = Tuning::IMPROVED;
-        self.screen = if SILHOUETTES { Screen::new(camera) } else { Screen::sized(camera.width(), camera.height()) };
+        self.settle(camera, optimizations, Tuning::IMPROVED, view.order.len().min(C::Index::MAX));
         #[cfg(feature = "acceleration-tables")]
         {
             self.hierarchy_nodes = 0;
