@@ -38,11 +38,12 @@ use crate::scene;
 /// (`scene::SHADOW_TABLES_IN_FLASH`).
 const TABLES_PER_OBJECT: usize = if scene::HIERARCHY_IN_FLASH || scene::SHADOW_TABLES_IN_FLASH { PREPARATION_PER_OBJECT } else { SHADOW_TABLES_PER_OBJECT };
 
-/// Preparation's tables per object on the stack when the chip builds its screen grid
+/// Preparation's tables per object on the stack when the chip builds its tables
 /// (optimize/acceleration.rs, `rebuild_with`: each object's screen capsule and primitive;
 /// optimize/grid.rs: its places in the grid's pool), twice: once is less than measured (tree-s6
 /// in `f32`, 40 bytes an object once, its peak 60 an object above the base), as a table made
-/// and then moved can be live twice. None when the grid is in flash (no pool, none built).
+/// and then moved can be live twice. None for a scene prepared ahead, whose grid and view's
+/// tables are in flash (`GRID_ENTRIES_PER_OBJECT` 0): `rebuild_with` is not even linked.
 const PREPARATION_PER_OBJECT: usize = if scene::GRID_ENTRIES_PER_OBJECT == 0 {
     0
 } else {

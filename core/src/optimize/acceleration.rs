@@ -282,9 +282,18 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
         // its volumes projected in f64.
         // Without the `f64-silhouettes` feature (the firmware) there are only the capsules.
         let capsules = tuning.tight_silhouettes || !SILHOUETTES;
+        // And each object's capsule for the grid's per-entry depth bounds (28 bytes in f32).
+        let mut stored = C::PerObject::<Capsule<N>>::filled(count, Capsule::UNSET);
+        let mut shapes = C::PerObject::<Primitive>::filled(count, Primitive::Sphere);
         for index in 0..count {
             let Some((bounds, geometry)) = of(index) else { continue };
+            if let Some(shape) = shapes.slots_mut().get_mut(index) {
+                *shape = bounds.primitive;
+            }
             let capsule = if capsules { bounds.capsule } else { Capsule::UNSET };
+            if let Some(slot) = stored.slots_mut().get_mut(index) {
+                *slot = capsule;
+            }
             // A capsule that reaches the eye plane covers the whole screen; its object's f64
             // silhouette clipped at the eye plane (`projection`, B16) does better. Only such
             // objects with their geometry take that path (the thesis scenes have none); from
@@ -342,15 +351,6 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
         if !optimizations.grid || self.grid_in_flash().is_some() {
             self.grid.clear();
             return;
-        }
-        // Each object's capsule and primitive for the grid's per-entry depth bounds (34 bytes an
-        // object in f32), only when a grid is built here.
-        let (mut stored, mut shapes) = (C::PerObject::<Capsule<N>>::filled(count, Capsule::UNSET), C::PerObject::<Primitive>::filled(count, Primitive::Sphere));
-        for (index, (slot, shape)) in stored.slots_mut().iter_mut().zip(shapes.slots_mut().iter_mut()).enumerate().take(count) {
-            if let Some((bounds, _)) = of(index) {
-                *slot = if capsules { bounds.capsule } else { Capsule::UNSET };
-                *shape = bounds.primitive;
-            }
         }
         let capsules_of = |index: usize| stored.slots().get(index).copied();
         let polygon = |index: usize| match of(index).and_then(|(_, geometry)| geometry) {
