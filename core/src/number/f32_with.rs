@@ -179,6 +179,11 @@ impl<S: SquareRoot> Number for F32With<S> {
     }
 
     #[inline]
+    fn to_i32_monotone(self) -> i32 {
+        <f32 as Number>::to_i32_monotone(self.0)
+    }
+
+    #[inline]
     fn abs(self) -> Self {
         Self::new(<f32 as Number>::abs(self.0))
     }

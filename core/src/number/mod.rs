@@ -77,6 +77,15 @@ pub trait Number:
     /// The largest integer not above `self`, saturating to the `i32` range.
     fn floor_to_i32(self) -> i32;
 
+    /// An integer within one of `self` that never decreases as `self` grows, saturating to
+    /// the `i32` range: ⌊self⌋ or `self` truncated toward zero, whichever the type computes
+    /// more cheaply (floating point truncates: one conversion). For conservative integer
+    /// bounds, which need only the order kept, and for values known not to be negative, where
+    /// both are ⌊self⌋.
+    fn to_i32_monotone(self) -> i32 {
+        self.floor_to_i32()
+    }
+
     fn abs(self) -> Self {
         if self < Self::ZERO {
             -self
@@ -102,19 +111,28 @@ pub trait Number:
     }
 
     /// `self` raised to an integer power by repeated squaring (the specular term: §4.2.4 uses
-    /// `pow`, which a fixed-point type cannot provide in general).
+    /// `pow`, which a fixed-point type cannot provide in general). The result starts as the
+    /// power of the exponent's lowest set bit rather than as one times it, and the loop ends
+    /// with the last product, not with a square nobody uses: the same products in the same
+    /// order (one times a value is exact in every type), fewer instructions.
     fn powi(self, exponent: u32) -> Self {
-        let mut result = Self::ONE;
+        if exponent == 0 {
+            return Self::ONE;
+        }
         let mut base = self;
         let mut remaining = exponent;
+        while remaining & 1 == 0 {
+            base = base * base;
+            remaining >>= 1;
+        }
+        let mut result = base;
+        remaining >>= 1;
         while remaining > 0 {
+            base = base * base;
             if remaining & 1 == 1 {
                 result = result * base;
             }
             remaining >>= 1;
-            if remaining > 0 {
-                base = base * base;
-            }
         }
         result
     }

@@ -262,8 +262,8 @@ impl<N: Number> ShadowBound<N> {
                         reach_squared: reach * reach,
                         // A point's cone: the cosine of the widened half-angle, as above.
                         cosine,
-                        low: QuantizedDirection::floor(low).0,
-                        high: QuantizedDirection::ceil(high).0,
+                        low: QuantizedDirection::new(low).0,
+                        high: QuantizedDirection::new(high).0,
                     },
                     reach: LightReach {
                         centre: ua + chord.times_power_of_two(-1),
@@ -305,16 +305,19 @@ pub struct DirectionChord<N> {
     /// (the cone test, one dot product).
     pub cosine: N,
     /// The box of the directions within the reach of the chord, in [`QuantizedDirection`]'s
-    /// steps (rounded outward): a direction outside is excluded by an integer comparison or
+    /// steps: a direction outside is excluded by an integer comparison or
     /// two ([`DirectionChord::outside_box`]), before any arithmetic in the number type.
     pub low: [i16; 3],
     pub high: [i16; 3],
 }
 
-/// A direction's components in steps of 2⁻¹⁴, each rounded down ([`QuantizedDirection::floor`])
-/// or up ([`QuantizedDirection::ceil`]) and saturated to `i16`: a unit vector's fit with room.
-/// A shadow ray's direction is converted once, and compared with every candidate's box in
-/// integers (a comparison in a software number type costs tens of instructions).
+/// A direction's components in steps of 2⁻¹⁴, each rounded to an integer by
+/// [`Number::to_i32_monotone`] and saturated to `i16`: a unit vector's fit with room. A
+/// shadow ray's direction is converted once, and compared with every candidate's box in
+/// integers (a comparison in a software number type costs tens of instructions). Any rounding
+/// that never decreases as its argument grows keeps the box conservative: d ≥ low gives
+/// q(d) ≥ q(low), so q(d) < q(low) proves d < low (and likewise above), whichever way the type
+/// rounds.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct QuantizedDirection(pub [i16; 3]);
 
@@ -322,19 +325,11 @@ pub struct QuantizedDirection(pub [i16; 3]);
 const QUANTIZED_EXPONENT: i32 = 14;
 
 impl QuantizedDirection {
-    /// Each component's floor. If ⌊d·2¹⁴⌋ < ⌊low·2¹⁴⌋ then d < low; saturation only moves a
-    /// bound beyond every unit direction. Inline: the scaling by a constant power of two then
-    /// folds into one multiplication.
+    /// Inline: the scaling by a constant power of two then folds into one multiplication.
     #[inline(always)]
-    pub fn floor<N: Number>(v: Vector3<N>) -> Self {
-        let step = |x: N| x.times_power_of_two(QUANTIZED_EXPONENT).floor_to_i32().clamp(i32::from(i16::MIN), i32::from(i16::MAX)) as i16;
+    pub fn new<N: Number>(v: Vector3<N>) -> Self {
+        let step = |x: N| x.times_power_of_two(QUANTIZED_EXPONENT).to_i32_monotone().clamp(i32::from(i16::MIN), i32::from(i16::MAX)) as i16;
         Self([step(v.x), step(v.y), step(v.z)])
-    }
-
-    /// Each component's ceiling: if ⌊d·2¹⁴⌋ > ⌈high·2¹⁴⌉ then d > high.
-    pub fn ceil<N: Number>(v: Vector3<N>) -> Self {
-        let Self(floors) = Self::floor(-v);
-        Self(floors.map(|floor| floor.saturating_neg()))
     }
 }
 
@@ -349,7 +344,7 @@ impl<N: Number> DirectionChord<N> {
         high: [i16::MAX; 3],
     };
 
-    /// Whether the direction (from the light, [`QuantizedDirection::floor`]ed) lies outside
+    /// Whether the direction (from the light, made a [`QuantizedDirection`]) lies outside
     /// the box of the directions the chord may meet: then [`DirectionChord::excludes`] it too.
     #[inline(always)]
     pub fn outside_box(&self, direction: QuantizedDirection) -> bool {
@@ -548,7 +543,7 @@ mod tests {
                                 // A point's cone, and its box, keep the ray's direction.
                                 let chord = bounds[blocker].footprint(light).chord;
                                 let from_light = Vector3::<N>::from_f64(d.map(|c| -c));
-                                assert!(!chord.excludes(from_light) && !chord.outside_box(QuantizedDirection::floor(from_light)), "{}: scene {scene}: the cone of {blocker} excludes a ray that meets it", N::NAME);
+                                assert!(!chord.excludes(from_light) && !chord.outside_box(QuantizedDirection::new(from_light)), "{}: scene {scene}: the cone of {blocker} excludes a ray that meets it", N::NAME);
                             }
                         }
                     }
@@ -611,7 +606,7 @@ mod tests {
                                 let length = libm::sqrt(v.iter().map(|c| c * c).sum::<f64>());
                                 let direction = Vector3::<N>::from_f64(v.map(|c| c / length));
                                 assert!(!footprints[blocker].chord.excludes(direction), "{}: scene {scene}: the chord of {blocker} excludes a ray that meets it", N::NAME);
-                                let quantized = QuantizedDirection::floor(direction);
+                                let quantized = QuantizedDirection::new(direction);
                                 assert!(!footprints[blocker].chord.outside_box(quantized), "{}: scene {scene}: the box of {blocker}'s chord excludes a ray that meets it", N::NAME);
                             }
                         }

@@ -184,7 +184,8 @@ impl<N: Number, C: Config<Number = N>> SpaceGrid<C> {
         let mut a = [0usize; 3];
         let mut b = [0usize; 3];
         for axis in 0..3 {
-            let index = |value: N| value.checked_div(cell[axis]).map_or(0, |q| q.floor_to_i32().min(self.resolution as i32 - 1).max(0) as usize);
+            // Below zero, floored or truncated, clamps to cell 0 either way.
+            let index = |value: N| value.checked_div(cell[axis]).map_or(0, |q| q.to_i32_monotone().min(self.resolution as i32 - 1).max(0) as usize);
             a[axis] = index(c[axis] - r - margin(cell[axis]) - low[axis]);
             b[axis] = index(c[axis] + r + margin(cell[axis]) - low[axis]);
         }
@@ -264,7 +265,8 @@ impl<N: Number, C: Config<Number = N>> SpaceGrid<C> {
         for axis in 0..3 {
             let at = origin[axis] + direction[axis] * enter - low[axis];
             // `min` then `max`, not `clamp`: clamp asserts its bounds' order, a panic path.
-            let index = at.checked_div(cell[axis]).map_or(0, |q| q.floor_to_i32()).min(resolution - 1).max(0);
+            // Below zero, floored or truncated, clamps to cell 0 either way.
+            let index = at.checked_div(cell[axis]).map_or(0, |q| q.to_i32_monotone()).min(resolution - 1).max(0);
             position[axis] = index;
             if direction[axis] > N::ZERO {
                 step[axis] = 1;

@@ -80,7 +80,8 @@ impl<N: Number, M: Mode<N>, C: Config<Number = N>> Sampler<'_, '_, N, M, C> {
 }
 
 fn to_rgb<N: Number, C: Config<Number = N>>(colour: [N; 3], scene: &Prepared<C>) -> Rgb {
-    colour.map(|channel| (channel + scene.constants.half).floor_to_i32().clamp(0, 255) as u8)
+    // Any value below zero clamps to 0 whether it was floored or truncated.
+    colour.map(|channel| (channel + scene.constants.half).to_i32_monotone().clamp(0, 255) as u8)
 }
 
 /// The pixels of an antialiased image: each the mean of its corners, subdivided where they

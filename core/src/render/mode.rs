@@ -29,7 +29,8 @@ impl<N: Number, C: Config<Number = N>> NodeColours<N> for PgaNodes<'_, C> {
     type Pixel = u8;
     fn finish(&self, colour: [N; 3], pixel: PixelPosition) -> u8 {
         let half = self.scene.constants.half;
-        let mixed = colour.map(|c| (c + half).floor_to_i32().clamp(0, 255) as u8);
+        // Any value below zero clamps to 0 whether it was floored or truncated.
+        let mixed = colour.map(|c| (c + half).to_i32_monotone().clamp(0, 255) as u8);
         self.scene.palette.dithered(mixed, dither_threshold(pixel.screen_x, pixel.screen_y))
     }
     fn local(&self, material: &PreparedMaterial<N>, lighting: Lighting<N>, pixel: PixelPosition) -> [N; 3] {

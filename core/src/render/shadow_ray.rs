@@ -177,7 +177,7 @@ fn transmitted<N: Number, C: Config<Number = N>>(
     let segment = ShadowSegment { ray: Ray { origin: point, direction: to_light }, interval: Interval::below(light_distance) };
     let culls = scene.acceleration.culls_shadows();
     let from_light = -to_light;
-    let quantized = if culling.light_cones.is_empty() { QuantizedDirection::default() } else { QuantizedDirection::floor(from_light) };
+    let quantized = if culling.light_cones.is_empty() { QuantizedDirection::default() } else { QuantizedDirection::new(from_light) };
     let set = culling.blockers.get(shaded_object).copied();
     // A scene of many objects: its blockers from the hierarchy, multiplied in object order as
     // below (so the product rounds the same); more than the list holds, the loop below.
@@ -266,7 +266,7 @@ fn blocked<N: Number, C: Config<Number = N>>(
     // Converted once for the candidates' boxes (only a point light has chords). Converting
     // at the first candidate that needs it measured slower: the state kept the candidate
     // test out of line.
-    let quantized = if cones.is_empty() { QuantizedDirection::default() } else { QuantizedDirection::floor(from_light) };
+    let quantized = if cones.is_empty() { QuantizedDirection::default() } else { QuantizedDirection::new(from_light) };
     let set = culling.blockers.get(shaded_object).copied();
     let listed = |index: usize| set.is_none_or(|set| index >= BlockerSet::CAPACITY || set.contains(index));
     // The last blocker first (never the shaded object: it cannot block its own ray).

@@ -34,16 +34,17 @@ impl<N: Number> ShadingConstants<N> {
         }
     }
 
-    /// Rounds or dithers an intensity in [0, `top`] to an integer level (§6.3–6.4).
+    /// Rounds or dithers an intensity in [0, `top`] to an integer level (§6.3–6.4). Every
+    /// value rounded is at least zero, where [`Number::to_i32_monotone`] is the floor.
     pub fn quantize(&self, intensity: N, top: N, dither: bool, pixel: PixelPosition) -> i32 {
         let clamped = intensity.max(N::ZERO).min(top);
         if dither {
-            let whole = clamped.floor_to_i32();
+            let whole = clamped.to_i32_monotone();
             let fraction = clamped - N::from_i32(whole);
-            let step = (self.fifteen * fraction + self.half).floor_to_i32();
+            let step = (self.fifteen * fraction + self.half).to_i32_monotone();
             whole + i32::from(step > i32::from(dither_threshold(pixel.screen_x, pixel.screen_y)))
         } else {
-            (clamped + self.half).floor_to_i32()
+            (clamped + self.half).to_i32_monotone()
         }
     }
 }
