@@ -521,14 +521,14 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
         self.tuning
     }
 
-    /// Whether the object `object` may be seen at `pixel` by its extent (true when extents
-    /// are not computed).
+    /// Whether the pixel lies in the rectangle of the object's extent (false when there is no
+    /// extent): the hit cache's filter. The rectangle only, not the octagon's diagonals: the
+    /// previous pixel's object is almost always still there, and the diagonal test cost
+    /// more than the few intersections it saves (snooker, Cortex-M4F `f32`: 19 more
+    /// ray–object tests, 63 K fewer instructions).
     #[inline]
     pub fn in_extent(&self, object: usize, pixel: PixelPosition) -> bool {
-        self.extents_table().get(object).is_some_and(|extent| {
-            extent.contains(pixel.column, pixel.row)
-                && (!self.tuning.tight_silhouettes || extent.diagonals_contain(pixel.column, pixel.row, self.screen.height))
-        })
+        self.extents_table().get(object).is_some_and(|extent| extent.contains(pixel.column, pixel.row))
     }
 
     /// Sortlist is on (for the grid's per-entry bounds).
