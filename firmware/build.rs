@@ -251,6 +251,10 @@ fn copy_memory_layout(manifest_dir: &Path, out_dir: &Path, board: Board) -> Memo
     println!("cargo:rerun-if-changed={}", source.display());
     std::fs::copy(&source, out_dir.join("memory.x"))
         .unwrap_or_else(|error| fail(&format!("cannot copy {}: {error}", source.display())));
+    // cortex-m-rt's `device` feature has its link.x include a device crate's `device.x`, the
+    // interrupt handlers' weak aliases: there are none (src/vectors.rs).
+    std::fs::write(out_dir.join("device.x"), "/* No device interrupt handlers: src/vectors.rs. */\n")
+        .unwrap_or_else(|error| fail(&format!("cannot write device.x: {error}")));
     println!("cargo:rustc-link-search={}", out_dir.display());
     // cortex-m-rt's linker script (with memory.x); here rather than in .cargo/config.toml's
     // rustflags, which the examples below this folder would inherit.

@@ -18,6 +18,7 @@ mod ram;
 mod report;
 mod semihosting;
 mod stack;
+mod vectors;
 
 /// The scene, generated from the `.mts` file by build.rs.
 mod scene {
