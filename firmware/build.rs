@@ -29,11 +29,9 @@
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
-use microtrace::model::{solid_needs_and_box, Optimizations, Primitive, SceneDescription, SolidNeeds};
+use microtrace::bake::{Bake, BAKE_CAPACITY};
+use microtrace::model::{Optimizations, Primitive, SceneDescription};
 use microtrace::number::NumberKind;
-
-/// Objects a scene file may hold at build time; the firmware itself is sized by the scene.
-const PARSE_CAPACITY: usize = 512;
 
 
 fn main() {
@@ -47,7 +45,7 @@ fn main() {
         .map(PathBuf::from)
         .unwrap_or_else(|| manifest_dir.join("../scenes/snooker.mts"));
     println!("cargo:rerun-if-changed={}", scene_path.display());
-    for name in ["MICROTRACE_SCENE", "MICROTRACE_NUMBER", "MICROTRACE_SIZE", "MICROTRACE_OPT", "MICROTRACE_FAULT_TEST", "MICROTRACE_STACK_RESERVE", "MICROTRACE_GRID_ENTRIES_PER_OBJECT"] {
+    for name in ["MICROTRACE_SCENE", "MICROTRACE_NUMBER", "MICROTRACE_SIZE", "MICROTRACE_OPT", "MICROTRACE_FAULT_TEST", "MICROTRACE_STACK_RESERVE"] {
         println!("cargo:rerun-if-env-changed={name}");
     }
     println!("cargo:rustc-check-cfg=cfg(microtrace_fault_test)");
@@ -58,42 +56,30 @@ fn main() {
     }
 
     let number_name = env("MICROTRACE_NUMBER").unwrap_or_else(|| "f32".into());
-    let number = number_type(&number_name, board);
-    let (width, height) = render_size(&env("MICROTRACE_SIZE").unwrap_or_else(|| "128x64".into()));
+    let bake = Bake { size: render_size(&env("MICROTRACE_SIZE").unwrap_or_else(|| "128x64".into())), number: number_kind(&number_name, board), f32_square_root: fpu_square_root(board) };
 
     let text = std::fs::read(&scene_path)
         .unwrap_or_else(|error| fail(&format!("cannot read the scene {}: {error}", scene_path.display())));
     println!("cargo:rustc-check-cfg=cfg(microtrace_sizing)");
-    let parsed: Result<microtrace::model::SceneDescription<PARSE_CAPACITY>, _> = microtrace::parser::parse_file(&scene_path.to_string_lossy(), &text);
+    let parsed: Result<microtrace::model::SceneDescription<BAKE_CAPACITY>, _> = microtrace::parser::parse_file(&scene_path.to_string_lossy(), &text);
     let mut description = match parsed {
         Ok(description) => description,
         Err(error) if matches!(error.kind, microtrace::model::SceneErrorKind::TooManyObjects { .. }) => {
-            return size_only(&scene_path, &text, (width, height), (number, &number_name), board, &memory, &out_dir);
+            return size_only(&scene_path, &text, &bake, board, &memory, &out_dir);
         }
         Err(error) => fail(&in_file(&scene_path, &error)),
     };
-    description.fit_to_size(width, height);
     if let Some(optimizations) = optimization_override(env("MICROTRACE_OPT").as_deref()) {
         description.optimizations = optimizations;
     }
     check_primitives(&description, &scene_path);
 
-    let mut source = generate(&description, &scene_path, number, &number_name, board);
+    // The scene baked in the number type: what the chip starts from (no f64 there).
+    let baked = microtrace::bake::bake(&description, &bake).unwrap_or_else(|error| fail(&in_file(&scene_path, &error)));
+    let mut source = board_facts(&scene_path, board);
+    source.push_str(&baked);
     memory.write(&mut source);
     write_stack_reserve(&mut source);
-    // The scene prepared ahead in the number type: what the chip starts from (no f64 there).
-    let vsqrt = number.contains("VsqrtF32");
-    let written = match NumberKind::from_name(&number_name) {
-        Some(NumberKind::F32) if vsqrt => ahead::<microtrace::number::F32With<HostSqrt>>(&description, &mut source),
-        Some(kind) => microtrace::with_number_kind!(kind, N => ahead::<N>(&description, &mut source)),
-        None => fail(&format!("MICROTRACE_NUMBER={number_name}: no preparation ahead for it")),
-    };
-    if let Err(error) = written {
-        fail(&match error {
-            Ahead::Scene(error) => in_file(&scene_path, &error),
-            Ahead::Write(error) => format!("{}: writing the scene prepared ahead: {error}", scene_path.display()),
-        });
-    }
     std::fs::write(out_dir.join("scene.rs"), source).unwrap();
 }
 
@@ -111,49 +97,33 @@ fn write_stack_reserve(source: &mut String) {
     writeln!(source, "pub const STACK_RESERVE_BYTES: Option<usize> = {reserve};").unwrap();
 }
 
-/// A scene of more objects than the build prepares ahead ([`PARSE_CAPACITY`]; Haines' SPD
-/// scenes have thousands): only its counts are written, which size the chip's tables, and the
-/// build is compiled with `cfg(microtrace_sizing)`, where firmware/src/ram.rs stops it with the
-/// RAM the scene would need on the board (the same check, in the target's own layout), so a
-/// report can say what such a scene needs. It never links.
-fn size_only(scene_path: &Path, text: &[u8], (width, height): (u16, u16), (number, number_name): (&str, &str), board: Board, memory: &Memory, out_dir: &Path) {
+/// A scene of more objects than the build bakes ([`BAKE_CAPACITY`]; Haines' SPD scenes have
+/// thousands): only its sizes are written (`microtrace::bake::bake_sizes`), and the build is
+/// compiled with `cfg(microtrace_sizing)`, where firmware/src/ram.rs stops it with the RAM the
+/// scene would need on the board (the same check, in the target's own layout), so a report can
+/// say what such a scene needs. It never links.
+fn size_only(scene_path: &Path, text: &[u8], bake: &Bake<'_>, board: Board, memory: &Memory, out_dir: &Path) {
     let parsed: Result<microtrace::model::Description<Vec<microtrace::model::ObjectDescription>>, _> = microtrace::parser::parse_file(&scene_path.to_string_lossy(), text);
-    let mut description = parsed.unwrap_or_else(|error| fail(&in_file(scene_path, &error)));
-    description.fit_to_size(width, height);
-    let mut source = generate(&description, scene_path, number, number_name, board);
+    let description = parsed.unwrap_or_else(|error| fail(&in_file(scene_path, &error)));
+    let mut source = board_facts(scene_path, board);
+    source.push_str(&microtrace::bake::bake_sizes(&description, bake));
     memory.write(&mut source);
     write_stack_reserve(&mut source);
-    // As a build that prepares it would: a hierarchy for many objects with Extents on.
-    write_ahead_flags(&mut source, description.objects.len() > microtrace::optimize::HIERARCHY_AHEAD_ABOVE && description.optimizations.extents, false, false, false);
-    writeln!(source, "/// Sizing only: no object is prepared ahead.").unwrap();
-    writeln!(source, "pub static OBJECTS_AHEAD: [microtrace::model::Object<Number>; 0] = [];").unwrap();
-    writeln!(source, "pub static SOLID_NODES_AHEAD: [microtrace::model::PreparedSolidNode<Number>; 0] = [];").unwrap();
-    writeln!(source, "pub static PALETTE_AHEAD: microtrace::model::Palette = microtrace::model::Palette {{ entries: [microtrace::model::Rgb4 {{ r: 0, g: 0, b: 0 }}; 256] }};").unwrap();
-    writeln!(source, "/// The objects the build prepares ahead at most (firmware/build.rs).\npub const PREPARED_AHEAD_AT_MOST: usize = {PARSE_CAPACITY};").unwrap();
+    writeln!(source, "/// The objects the build bakes at most (microtrace::bake::BAKE_CAPACITY).\npub const PREPARED_AHEAD_AT_MOST: usize = {BAKE_CAPACITY};").unwrap();
     println!("cargo:rustc-cfg=microtrace_sizing");
     std::fs::write(out_dir.join("scene.rs"), source).unwrap();
 }
 
-/// `HIERARCHY_IN_FLASH`: whether the scene's shadow and secondary rays walk a hierarchy kept in
-/// flash; `SHADOW_TABLES_IN_FLASH`, whether the lights' shadow tables are (with either, no
-/// shadow tables are built on the stack: src/ram.rs); `MADE_AHEAD`, what is in flash as the
-/// scene's `Arrays` takes it (the hierarchy, the screen grid, the shadow tables, the view's
-/// tables); `VIEW_TABLE_OBJECTS`, the room for the view's tables in RAM (none when made ahead);
-/// and the grid's pool entries per object (none with the grid in flash).
-fn write_ahead_flags(source: &mut String, hierarchy: bool, grid: bool, shadow_tables: bool, view: bool) {
-    writeln!(source, "/// Whether a hierarchy of boxes made ahead is in flash (src/ram.rs: no shadow tables).\npub const HIERARCHY_IN_FLASH: bool = {hierarchy};").unwrap();
-    writeln!(source, "/// Whether the lights' shadow tables made ahead are in flash (src/ram.rs).\npub const SHADOW_TABLES_IN_FLASH: bool = {shadow_tables};").unwrap();
-    let ahead = u8::from(hierarchy) * microtrace::config::AHEAD_HIERARCHY
-        + u8::from(grid) * microtrace::config::AHEAD_GRID
-        + u8::from(shadow_tables) * microtrace::config::AHEAD_SHADOW_TABLES
-        + u8::from(view) * microtrace::config::AHEAD_VIEW;
-    writeln!(source, "/// The objects the tables that depend on the view hold in RAM: none when they are made ahead.\npub const VIEW_TABLE_OBJECTS: usize = if {view} {{ 0 }} else {{ OBJECT_COUNT }};").unwrap();
-    writeln!(source, "/// What is made ahead (`microtrace::config::Arrays`' `AHEAD`).\npub const MADE_AHEAD: u8 = {ahead};").unwrap();
-    // The grid's pool: none when the grid is in flash; else the entries per object the scene's
-    // grid holds at the build's view (xtask counts them, `MICROTRACE_GRID_ENTRIES_PER_OBJECT`),
-    // or the core's default.
-    let grid_entries = if grid { 0 } else { grid_entries_per_object() };
-    writeln!(source, "pub const GRID_ENTRIES_PER_OBJECT: usize = {grid_entries};").unwrap();
+/// What the firmware says of its build beside the baked scene: the board and the scene's file.
+fn board_facts(scene_path: &Path, board: Board) -> String {
+    let scene_name = scene_path.file_name().map(|name| name.to_string_lossy().into_owned()).unwrap_or_default();
+    let mut out = String::new();
+    writeln!(out, "// Written by firmware/build.rs from {}: do not edit.", scene_path.display()).unwrap();
+    writeln!(out, "pub const BOARD_NAME: &str = {:?};", board.name()).unwrap();
+    writeln!(out, "pub const SCENE_NAME: &str = {scene_name:?};").unwrap();
+    writeln!(out, "/// The scene file as the build was given it, for messages.").unwrap();
+    writeln!(out, "pub const SCENE_PATH: &str = {:?};", scene_path.display().to_string()).unwrap();
+    out
 }
 
 fn env(name: &str) -> Option<String> {
@@ -168,12 +138,6 @@ fn in_file(path: &Path, error: &microtrace::model::SceneError) -> String {
     } else {
         format!("{}:{error}", path.display())
     }
-}
-
-/// Why the scene could not be prepared ahead.
-enum Ahead {
-    Scene(microtrace::model::SceneError),
-    Write(std::fmt::Error),
 }
 
 /// Stops the build with `message` (cargo shows a failed build script's stderr).
@@ -313,77 +277,27 @@ fn memory_region(text: &str, name: &str) -> Option<(u64, u64)> {
     })
 }
 
-/// The Rust type the tracer computes in (the core's `NumberKind`), checking that the firmware
-/// feature it needs is on.
-fn number_type(name: &str, board: Board) -> &'static str {
-    // The Cortex-M4F's and M33's FPU has `vsqrt.f32`, which the core cannot emit (libm's
-    // `sqrtf` is integer code there); it is correctly rounded, so the image is plain f32's. Only
-    // with the hard-float ABI (an FPU); the M3 and M0 have none (and the crate is empty there).
-    let hard_float = env("CARGO_CFG_TARGET_ABI").as_deref() == Some("eabihf");
+/// The number type (`MICROTRACE_NUMBER`), checking that the firmware feature it needs is on.
+fn number_kind(name: &str, _board: Board) -> NumberKind {
     let Some(kind) = NumberKind::from_name(name) else {
         let names: Vec<&str> = NumberKind::ALL.iter().map(|kind| kind.name()).collect();
         let (last, rest) = names.split_last().unwrap_or((&"", &[]));
         fail(&format!("MICROTRACE_NUMBER={name}: expected {} or {last}", rest.join(", ")))
     };
-    if kind == NumberKind::F32 && board.has_fpu() && hard_float {
-        return "microtrace::number::F32With<microtrace_fpu_sqrt::VsqrtF32>";
-    }
     if let Some(feature) = kind.feature() {
         if env(&format!("CARGO_FEATURE_{}", feature.to_uppercase().replace('-', "_"))).is_none() {
             fail(&format!("MICROTRACE_NUMBER={name} needs the firmware feature `{feature}`"));
         }
     }
-    kind.type_path()
+    kind
 }
 
-/// The host's stand-in for the FPU's `vsqrt.f32`: std's `f32::sqrt`, correctly rounded as
-/// VSQRT is, so the scene prepared here is bit for bit the one the chip would prepare.
-struct HostSqrt;
-
-impl microtrace::number::SquareRoot for HostSqrt {
-    const NAME: &'static str = "f32";
-
-    fn sqrt(x: f32) -> f32 {
-        x.sqrt()
-    }
-}
-
-/// Prepares the scene on the host in the number type `H` (as `microtrace render` does) and
-/// appends its parts prepared ahead (`microtrace::scene::ahead`) to `out`.
-fn ahead<H: microtrace::number::Number>(description: &SceneDescription<PARSE_CAPACITY>, out: &mut String) -> Result<(), Ahead> {
-    use microtrace::optimize::ObjectBounds;
-    let mut scene = Box::new(microtrace::scene::Scene::<H, PARSE_CAPACITY>::UNPREPARED);
-    scene.prepare_in_place(description, &description.objects).map_err(Ahead::Scene)?;
-    let bounds: Vec<ObjectBounds<H>> = description.objects.iter().map(ObjectBounds::ahead).collect();
-    // A scene of many objects: the hierarchy of boxes its host preparation would build, in
-    // flash (the chip has no f64 to build it); used with Extents on, as on the host.
-    let objects = &description.objects[..];
-    let references = microtrace::optimize::hierarchy_references(objects.len());
-    let mut nodes = vec![microtrace::optimize::bvh::BvhNode::<H>::UNSET; references];
-    let mut order = vec![0u16; references];
-    let (mut boxes, mut triangles) = (vec![([0.0; 3], [0.0; 3]); objects.len()], vec![None; objects.len()]);
-    let (mut pieces, mut owners) = (vec![([0.0; 3], [0.0; 3]); references], vec![0; references]);
-    let scratch = microtrace::optimize::HierarchyScratch { boxes: &mut boxes, triangles: &mut triangles, references: &mut pieces, owners: &mut owners };
-    let hierarchy = if scene.optimizations.extents { microtrace::optimize::hierarchy_ahead(objects, scratch, &mut nodes, &mut order) } else { None };
-    // The screen grid the chip would build for the view fixed here, from the same bounds in the
-    // same number type (`rebuild_from_bounds`, as its preparation does): built here and kept in
-    // flash, the chip builds none and keeps no pool in RAM.
-    let (camera, optimizations) = (scene.camera, scene.optimizations);
-    scene.acceleration.rebuild_from_bounds(&camera, optimizations, &bounds);
-    let grid = scene.acceleration.grid_parts().filter(|_| optimizations.grid);
-    // The lights' shadow tables a render would build for this view (the light is fixed here
-    // too): in flash, the chip builds none and keeps none on its stack.
-    let mut text = String::new();
-    // And the tables that depend on the view (each object's eye, extent, stadium, depth bound,
-    // shadow capsule, the test order), as the chip's preparation would make them: it makes none.
-    let view = scene.acceleration.view_parts(scene.eyes());
-    microtrace::render::shadow_tables_ahead(&*scene, |tables| {
-        write_ahead_flags(&mut text, hierarchy.is_some(), grid.is_some(), !tables.is_empty(), true);
-        microtrace::scene::ahead::write_prepared_ahead(&*scene, &bounds, hierarchy, grid, tables, Some(view), &mut text)
-    })
-    .map_err(Ahead::Write)?;
-    out.push_str(&text);
-    Ok(())
+/// The Cortex-M4F's and M33's FPU has `vsqrt.f32`, which the core cannot emit (libm's `sqrtf`
+/// is integer code there); it is correctly rounded, so the image is plain f32's
+/// (fpu-sqrt/src/lib.rs). Only with the hard-float ABI (an FPU); the M3 and M0 have none.
+fn fpu_square_root(board: Board) -> Option<&'static str> {
+    let hard_float = env("CARGO_CFG_TARGET_ABI").as_deref() == Some("eabihf");
+    (board.has_fpu() && hard_float).then_some("microtrace_fpu_sqrt::VsqrtF32")
 }
 
 fn render_size(text: &str) -> (u16, u16) {
@@ -455,61 +369,3 @@ fn check_primitives<const N: usize>(description: &SceneDescription<N>, scene_pat
         }
     }
 }
-
-
-fn generate<L: std::ops::Deref<Target = [microtrace::model::ObjectDescription]>>(
-    description: &microtrace::model::Description<L>,
-    scene_path: &Path,
-    number: &str,
-    number_name: &str,
-    board: Board,
-) -> String {
-    let mut out = String::new();
-    let d = description;
-    let v = d.viewport;
-    let scene_name = scene_path.file_name().map(|name| name.to_string_lossy().into_owned()).unwrap_or_default();
-
-    writeln!(out, "// Generated by firmware/build.rs from {}: do not edit.", scene_path.display()).unwrap();
-    writeln!(out, "/// The number type the tracer computes in (`MICROTRACE_NUMBER`).").unwrap();
-    writeln!(out, "pub type Number = {number};").unwrap();
-    writeln!(out, "/// Its name in the report (`MICROTRACE_NUMBER`: `f32` also when the square root is the FPU's).").unwrap();
-    writeln!(out, "pub const NUMBER_NAME: &str = {:?};", number_name).unwrap();
-    writeln!(out, "pub const BOARD_NAME: &str = {:?};", board.name()).unwrap();
-    writeln!(out, "pub const SCENE_NAME: &str = {:?};", scene_name).unwrap();
-    writeln!(out, "/// The scene file as the build was given it, for messages.").unwrap();
-    writeln!(out, "pub const SCENE_PATH: &str = {:?};", scene_path.display().to_string()).unwrap();
-    writeln!(out, "pub const WIDTH: u16 = {};", v.width()).unwrap();
-    writeln!(out, "pub const HEIGHT: u16 = {};", v.height()).unwrap();
-    writeln!(out, "pub const PIXEL_COUNT: usize = {};", v.pixel_count()).unwrap();
-    writeln!(out, "pub const OBJECT_COUNT: usize = {};", d.objects.len()).unwrap();
-    writeln!(out, "/// The lights after the first, what the scene's tables hold.\npub const OTHER_LIGHTS: usize = {};", d.more_lights.len()).unwrap();
-    // The ray tree's explicit stack holds this many nodes: the scene's `depth`, or one (the
-    // primary hit) when no object spawns rays.
-    let tree_depth = if d.objects.iter().any(|object| object.material.spawns_rays()) { d.depth } else { 1 };
-    writeln!(out, "pub const TREE_DEPTH: usize = {tree_depth};").unwrap();
-    // Antialiasing keeps one row of the pixels' corners: the image's width plus one.
-    let corner_row = if d.antialias.is_some() { usize::from(d.viewport.width()) + 1 } else { 1 };
-    writeln!(out, "pub const ANTIALIAS_ROW: usize = {corner_row};").unwrap();
-    // A ray's walk through a solid holds lists of spans (`csg::solid`): exactly as many as the
-    // scene's solids need, each need the largest over its solids (none without solids).
-    let needs = d
-        .objects
-        .iter()
-        .filter_map(|object| if let Primitive::Solid(range) = object.primitive { d.solids.get(range.nodes()) } else { None })
-        .filter_map(|nodes| solid_needs_and_box(nodes).map(|(needs, _)| needs))
-        .fold(SolidNeeds::default(), |all, one| SolidNeeds { spans: all.spans.max(one.spans), stack: all.stack.max(one.stack), held: all.held.max(one.held) });
-    writeln!(out, "pub const SOLID_SPANS: usize = {};", needs.spans).unwrap();
-    writeln!(out, "pub const SOLID_HELD_SPANS: usize = {};", needs.held).unwrap();
-    writeln!(out, "pub const SOLID_LISTS: usize = {};", needs.stack).unwrap();
-    out
-}
-
-/// `MICROTRACE_GRID_ENTRIES_PER_OBJECT` (set by xtask from the scene's grid), or the core's
-/// default when it is unset; a value that is not a count stops the build, naming it.
-fn grid_entries_per_object() -> usize {
-    match env("MICROTRACE_GRID_ENTRIES_PER_OBJECT").filter(|text| !text.is_empty()) {
-        None => microtrace::config::DEFAULT_GRID_ENTRIES_PER_OBJECT,
-        Some(text) => text.parse().unwrap_or_else(|_| fail(&format!("MICROTRACE_GRID_ENTRIES_PER_OBJECT: expected a number of entries (e.g. 9), not {text:?}"))),
-    }
-}
-

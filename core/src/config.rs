@@ -15,50 +15,62 @@ use core::marker::PhantomData;
 
 use crate::model::{Object, Objects, Palette, PreparedSolidNode, MAX_DEPTH, MAX_HELD_SPANS, MAX_LIGHTS, MAX_SOLID_NODES, MAX_SOLID_STACK, MAX_SPANS};
 use crate::number::Number;
-use crate::storage::{Index, List, Table};
+use crate::optimize::shadow_culling::ShadowTables;
+use crate::storage::{Index, List, Table, Unset};
 
 /// The build's number type, object storage and capacities.
+///
+/// Every table is a storage type: an array or a list sized here ([`Arrays`]), the heap on a
+/// host, or a table baked into flash ([`InFlash`](crate::storage::InFlash): the scene's own
+/// `Config` that [`crate::bake`] writes). The tables a scene keeps are [`Unset`] (every byte zero
+/// before preparation).
 pub trait Config: 'static {
     /// The number type the tracer computes in.
     type Number: Number;
     /// An object's number in the tables (and a place in the grid's pool).
     type Index: Index;
-    /// Where the prepared objects live (the scene's own list, or the firmware's in flash).
-    type Objects: Objects<Self::Number>;
-    /// Where the solids' prepared nodes live (the scene's own list, or the firmware's in flash,
+    /// Where the prepared objects live (the scene's own list, or a baked scene's in flash).
+    type Objects: Objects<Self::Number> + Unset;
+    /// Where the solids' prepared nodes live (the scene's own list, or a baked scene's in flash,
     /// exactly its scene's), and the capacities of a ray's walk through them.
-    type Solids: SolidStorage<Self::Number>;
-    /// Where the scene's look-up table lives (the scene's own copy, or the firmware's in flash).
-    type Palette: PaletteStorage;
-    /// One `T` per object.
+    type Solids: SolidStorage<Self::Number> + Unset;
+    /// Where the scene's look-up table lives (the scene's own copy, or a baked scene's in flash).
+    type Palette: PaletteStorage + Unset;
+    /// One `T` per object: the scratch tables of preparation and of a render.
     type PerObject<T: Copy>: Table<T>;
     /// One per object of a table that depends on the view (each object's eye, extent, stadium,
-    /// depth bound, shadow capsule, the test order): empty where they are made ahead
-    /// ([`Config::VIEW_AHEAD`]), else as [`Config::PerObject`].
-    type ViewTable<T: Copy>: Table<T>;
+    /// depth bound, shadow capsule, the test order): as [`Config::PerObject`], or in flash for a
+    /// baked scene, whose view is fixed when it is baked.
+    type ViewTable<T: Copy + Unset + 'static>: Table<T> + Unset;
     /// One `T` per object for each light after the first (as many tables of one per object as
     /// [`Config::OtherLights`] holds lights, one after the other): the per-render shadow tables
     /// of the other lights.
     type PerObjectPerOtherLight<T: Copy>: Table<T>;
-    /// The lights after the first: the firmware's exactly its scene's, a host's the format's
+    /// The lights after the first: a baked scene's exactly its scene's, a host's the format's
     /// [`MAX_LIGHTS`]` − 1`.
-    type OtherLights<T: Clone>: List<T>;
+    type OtherLights<T: Clone>: List<T> + Unset;
     /// At most one `T` per object.
-    type PerObjectList<T: Clone>: List<T>;
-    /// The screen grid's pool: [`Config::GRID_ENTRIES_PER_OBJECT`] `T`s per object.
-    type GridPool<T: Copy>: Table<T>;
+    type PerObjectList<T: Clone>: List<T> + Unset;
+    /// The screen grid's pool: [`Config::GRID_ENTRIES_PER_OBJECT`] `T`s per object (or a baked
+    /// scene's grid, in flash).
+    type GridPool<T: Copy + Unset + 'static>: Table<T> + Unset;
     /// The secondary rays' space grid's entries: `ENTRIES_PER_OBJECT` per object.
-    type SpaceEntries: Table<Self::Index>;
+    type SpaceEntries: Table<Self::Index> + Unset;
     /// The per-render lists of each object's blockers from the 128th object on, and where each
     /// object's list starts (kept when [`Config::BLOCKER_LISTS`]).
     type BlockerLists: Table<Self::Index>;
     /// The shadow rays' hierarchy of boxes (`optimize::bvh`): its nodes, and the objects its
-    /// leaves hold, one `T` per object each (kept when [`Config::HIERARCHY`]).
-    type Hierarchy<T: Copy>: Table<T>;
+    /// leaves hold, one `T` per object each (built when [`Config::HIERARCHY`], or a baked
+    /// scene's, in flash; none: the walk is not linked).
+    type Hierarchy<T: Copy + Unset + 'static>: Table<T> + Unset;
     /// The screen grid's cells (and one more): [`GRID_SIZE`](crate::optimize::grid::GRID_SIZE)
     /// squared on an array, up to [`MAX_GRID_SIZE`](crate::optimize::grid::MAX_GRID_SIZE)
     /// squared sized at run time (the grid's side then grows with the objects).
-    type ScreenCells<T: Copy>: Table<T>;
+    type ScreenCells<T: Copy + Unset + 'static>: Table<T> + Unset;
+    /// The lights' shadow tables kept with the scene, one per light: none where each render
+    /// builds its own (on the stack), a baked scene's in flash (the render then builds none, and
+    /// the code that builds them is not linked).
+    type ShadowTables: Table<ShadowTables<'static, Self::Number>> + Unset;
     /// The ray tree's stack of nodes: at most [`Config::TREE_DEPTH`].
     type TreeStack<T: Clone>: List<T>;
     /// One row of antialiasing corners: its length is how many the render keeps (the
@@ -66,7 +78,7 @@ pub trait Config: 'static {
     type CornerRow: Table<[u8; 3]>;
     /// The most objects the tables hold.
     const MAX_OBJECTS: usize;
-    /// The grid's pool entries per object (zero: no grid).
+    /// The grid's pool entries per object (zero: no grid built here).
     const GRID_ENTRIES_PER_OBJECT: usize;
     /// The deepest ray tree the render follows (a scene's deeper `depth` is cut here).
     const TREE_DEPTH: usize;
@@ -78,23 +90,6 @@ pub trait Config: 'static {
     /// (`optimize::bvh`), in place of the blocker tables, whose work grows with the pairs of
     /// objects: a host's, for scenes of thousands of objects (Haines' SPD).
     const HIERARCHY: bool = false;
-    /// Whether the scene comes with a hierarchy made ahead (the firmware's, in flash, for more
-    /// than 128 objects: `scene::ahead::PreparedAhead::hierarchy`): the code that walks one is
-    /// linked only then.
-    const HIERARCHY_AHEAD: bool = false;
-    /// Whether the scene comes with its screen grid made ahead for its view (the firmware's, in
-    /// flash: `scene::ahead::PreparedAhead::grid`): preparation then builds none, and the
-    /// grid's pool takes no RAM.
-    const GRID_AHEAD: bool = false;
-    /// Whether the scene comes with its lights' shadow tables made ahead (the firmware's, in
-    /// flash: `scene::ahead::PreparedAhead::shadow_tables`): the render builds none, so the code
-    /// that builds them is not linked and their stack is not taken.
-    const SHADOW_TABLES_AHEAD: bool = false;
-    /// Whether the scene comes with the per-object tables that depend on its view made ahead
-    /// (the firmware's, in flash: `scene::ahead::PreparedAhead::view`): each object's eye, extent,
-    /// stadium, depth bound, shadow capsule and the test order; preparation makes none, and
-    /// [`Config::ViewTable`] can hold nothing.
-    const VIEW_AHEAD: bool = false;
 
     /// The grid's pool entries for a scene of `objects` objects (a table sized at run time is
     /// made this long; an array keeps its length).
@@ -141,6 +136,10 @@ impl OwnedPalette {
     pub const BLACK: Self = Self(Palette { entries: [crate::model::Rgb4 { r: 0, g: 0, b: 0 }; 256] });
 }
 
+impl Unset for OwnedPalette {
+    const UNSET: Self = Self::BLACK;
+}
+
 impl core::ops::Deref for OwnedPalette {
     type Target = Palette;
 
@@ -178,74 +177,49 @@ pub const DEFAULT_TREE_DEPTH: usize = MAX_DEPTH as usize;
 /// of stack); a wider one traces the corners beyond again.
 pub const DEFAULT_ANTIALIAS_ROW: usize = 2049;
 
-/// Every table an array of a capacity fixed at compile time: `K` objects (kept in `O`),
-/// `POOL` grid entries per object, a ray tree `DEPTH` deep and antialiasing rows of `ROW`
-/// corners, the solids' nodes in `S`, the look-up table in `P`, `OTHER_LIGHTS` lights after the
-/// first, and the structures made ahead that `AHEAD` names ([`AHEAD_HIERARCHY`], [`AHEAD_GRID`],
-/// [`AHEAD_SHADOW_TABLES`], [`AHEAD_VIEW`]), and `VIEW` objects' room in the tables that depend
-/// on the view ([`Config::ViewTable`]: `K`, or none when they are made ahead).
-/// The firmware's scene is one (sized by its scene), and so are the tests'.
+/// Every table an array of a capacity fixed at compile time, in RAM: `K` objects, `POOL` grid
+/// entries per object, a ray tree `DEPTH` deep, antialiasing rows of `ROW` corners and
+/// `OTHER_LIGHTS` lights after the first; the objects, the solids' nodes and the look-up table
+/// the scene's own (`heapless::Vec`s, [`OwnedPalette`]). The tests' scenes are one, and a board
+/// that prepares its scene on the chip; a baked scene has a `Config` of its own
+/// ([`crate::bake`]).
 pub struct Arrays<
     N,
     const K: usize,
-    O = heapless::Vec<Object<N>, K>,
     const POOL: usize = DEFAULT_GRID_ENTRIES_PER_OBJECT,
     const DEPTH: usize = DEFAULT_TREE_DEPTH,
     const ROW: usize = DEFAULT_ANTIALIAS_ROW,
-    S = heapless::Vec<PreparedSolidNode<N>, MAX_SOLID_NODES>,
-    P = OwnedPalette,
     const OTHER_LIGHTS: usize = { MAX_LIGHTS - 1 },
-    const AHEAD: u8 = 0,
-    const VIEW: usize = K,
->(PhantomData<(N, O, S, P)>);
+>(PhantomData<N>);
 
-/// [`Arrays`]' `AHEAD`: the shadow and secondary rays' hierarchy made ahead
-/// ([`Config::HIERARCHY_AHEAD`]).
-pub const AHEAD_HIERARCHY: u8 = 1;
-/// [`Arrays`]' `AHEAD`: the screen grid made ahead ([`Config::GRID_AHEAD`]).
-pub const AHEAD_GRID: u8 = 2;
-/// [`Arrays`]' `AHEAD`: the lights' shadow tables made ahead ([`Config::SHADOW_TABLES_AHEAD`]).
-pub const AHEAD_SHADOW_TABLES: u8 = 4;
-/// [`Arrays`]' `AHEAD`: the tables that depend on the view made ahead ([`Config::VIEW_AHEAD`]).
-pub const AHEAD_VIEW: u8 = 8;
-
-impl<N, const K: usize, O, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize, const AHEAD: u8, const VIEW: usize> Debug for Arrays<N, K, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS, AHEAD, VIEW> {
+impl<N, const K: usize, const POOL: usize, const DEPTH: usize, const ROW: usize, const OTHER_LIGHTS: usize> Debug for Arrays<N, K, POOL, DEPTH, ROW, OTHER_LIGHTS> {
     fn fmt(&self, formatter: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         write!(formatter, "Arrays<{K} objects, {POOL} grid entries each, depth {DEPTH}, row {ROW}>")
     }
 }
 
-impl<N, const K: usize, O, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize, const AHEAD: u8, const VIEW: usize> Config for Arrays<N, K, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS, AHEAD, VIEW>
-where
-    N: Number + 'static,
-    O: Objects<N> + 'static,
-    S: SolidStorage<N> + 'static,
-    P: PaletteStorage + 'static,
-{
+impl<N: Number + 'static, const K: usize, const POOL: usize, const DEPTH: usize, const ROW: usize, const OTHER_LIGHTS: usize> Config for Arrays<N, K, POOL, DEPTH, ROW, OTHER_LIGHTS> {
     type Number = N;
     type Index = u16;
-    type Objects = O;
-    type Solids = S;
-    type Palette = P;
+    type Objects = heapless::Vec<Object<N>, K>;
+    type Solids = heapless::Vec<PreparedSolidNode<N>, MAX_SOLID_NODES>;
+    type Palette = OwnedPalette;
     type PerObject<T: Copy> = [T; K];
-    type ViewTable<T: Copy> = [T; VIEW];
+    type ViewTable<T: Copy + Unset + 'static> = [T; K];
     type PerObjectPerOtherLight<T: Copy> = [[T; K]; OTHER_LIGHTS];
     type OtherLights<T: Clone> = heapless::Vec<T, OTHER_LIGHTS>;
     type PerObjectList<T: Clone> = heapless::Vec<T, K>;
-    type GridPool<T: Copy> = [[T; POOL]; K];
+    type GridPool<T: Copy + Unset + 'static> = [[T; POOL]; K];
     type SpaceEntries = [[u16; SPACE_ENTRIES_PER_OBJECT]; K];
     type BlockerLists = [u16; 0];
-    type Hierarchy<T: Copy> = [T; 0];
-    type ScreenCells<T: Copy> = [T; SCREEN_GRID_CELLS + 1];
+    type Hierarchy<T: Copy + Unset + 'static> = [T; 0];
+    type ScreenCells<T: Copy + Unset + 'static> = [T; SCREEN_GRID_CELLS + 1];
+    type ShadowTables = [ShadowTables<'static, N>; 0];
     type TreeStack<T: Clone> = heapless::Vec<T, DEPTH>;
     type CornerRow = [[u8; 3]; ROW];
     const MAX_OBJECTS: usize = K;
     const GRID_ENTRIES_PER_OBJECT: usize = POOL;
     const TREE_DEPTH: usize = DEPTH;
-    const HIERARCHY_AHEAD: bool = AHEAD & AHEAD_HIERARCHY != 0;
-    const GRID_AHEAD: bool = AHEAD & AHEAD_GRID != 0;
-    const SHADOW_TABLES_AHEAD: bool = AHEAD & AHEAD_SHADOW_TABLES != 0;
-    const VIEW_AHEAD: bool = AHEAD & AHEAD_VIEW != 0;
 }
 
 /// The space grid's cell entries per object on average at most (else no grid).

@@ -25,6 +25,7 @@
 #[cfg(feature = "alloc")]
 extern crate alloc;
 
+pub mod bake;
 pub mod camera;
 pub mod config;
 pub mod csg;

@@ -20,7 +20,7 @@ mod semihosting;
 mod stack;
 mod vectors;
 
-/// The scene, generated from the `.mts` file by build.rs.
+/// The scene, baked from the `.mts` file by build.rs.
 mod scene {
     include!(concat!(env!("OUT_DIR"), "/scene.rs"));
 }
@@ -35,7 +35,6 @@ use microtrace::render::{PassStatistics, Progressive};
 use microtrace::render::Whole;
 #[cfg(not(any(feature = "framebuffer", feature = "progressive")))]
 use microtrace::render::Streamed;
-use microtrace::config::Arrays;
 use microtrace::render::Pga;
 #[cfg(not(feature = "progressive"))]
 use microtrace::render::Statistics;
@@ -48,67 +47,16 @@ use display::FramebufferAndDisplay;
 use display::StreamedRows;
 use semihosting::{print, HostFile};
 
-/// Sized by the scene: exactly its objects, which stay in flash with its solids and its look-up
-/// table; its grid's entries, its ray tree's depth and its row of antialiasing corners.
-type PreparedScene = Prepared<Arrays<scene::Number, { scene::OBJECT_COUNT }, FlashObjects, { scene::GRID_ENTRIES_PER_OBJECT }, { scene::TREE_DEPTH }, { scene::ANTIALIAS_ROW }, FlashSolids, FlashPalette, { scene::OTHER_LIGHTS }, { scene::MADE_AHEAD }, { scene::VIEW_TABLE_OBJECTS }>>;
-
-/// The scene's objects in flash, where the build put them prepared ahead (`OBJECTS_AHEAD`):
-/// they take no RAM (only each object's eye, which depends on the view, is in the scene).
-#[derive(Clone, Copy, Debug)]
-struct FlashObjects;
-
-impl core::ops::Deref for FlashObjects {
-    type Target = [microtrace::model::Object<scene::Number>];
-
-    fn deref(&self) -> &Self::Target {
-        &scene::OBJECTS_AHEAD
-    }
-}
-
-/// The solids' nodes, prepared ahead in flash like the objects (none without solids).
-#[derive(Clone, Copy, Debug, Default)]
-struct FlashSolids;
-
-impl core::ops::Deref for FlashSolids {
-    type Target = [microtrace::model::PreparedSolidNode<scene::Number>];
-
-    fn deref(&self) -> &Self::Target {
-        &scene::SOLID_NODES_AHEAD
-    }
-}
-
-/// The look-up table in flash, where the build wrote it (`PALETTE_AHEAD`): 768 bytes that
-/// stay out of RAM.
-#[derive(Clone, Copy, Debug, Default)]
-struct FlashPalette;
-
-impl core::ops::Deref for FlashPalette {
-    type Target = microtrace::model::Palette;
-
-    fn deref(&self) -> &Self::Target {
-        &scene::PALETTE_AHEAD
-    }
-}
-
-/// Written from the same scene at build time: it holds what preparation would give it.
-impl microtrace::config::PaletteStorage for FlashPalette {
-    fn hold(&mut self, _palette: &microtrace::model::Palette) {}
-}
-
-/// A ray's walk through a solid holds exactly the lists the scene's solids need (none without
-/// solids), on the stack.
-impl microtrace::config::SolidStorage<scene::Number> for FlashSolids {
-    type HeldSpans<T: Clone> = heapless::Vec<T, { scene::SOLID_HELD_SPANS }>;
-    type Spans<T: Clone> = heapless::Vec<T, { scene::SOLID_SPANS }>;
-    type Lists<T: Clone> = heapless::Vec<T, { scene::SOLID_LISTS }>;
-}
+/// The scene baked by build.rs (`microtrace::bake`): its own `Config`, whose objects, solids,
+/// look-up table and view's tables stay in flash; what it keeps in RAM sized by it.
+type PreparedScene = Prepared<scene::SceneConfig>;
 
 #[entry]
 fn main() -> ! {
     // The prepared scene (objects, acceleration structures) is static RAM, zero-initialised
     // and prepared in place: returned by value it would pass through the stack. (cortex-m-rt
     // makes an entry's `static mut` a `&'static mut`.)
-    static mut SCENE: PreparedScene = PreparedScene::unprepared(FlashObjects, FlashSolids, FlashPalette);
+    static mut SCENE: PreparedScene = PreparedScene::UNPREPARED;
     // From here on an access outside the flash, the RAM and the peripherals faults, and so does
     // the stack running off the bottom of RAM (src/fault.rs).
     mpu::protect_memory();
@@ -200,9 +148,9 @@ fn prepare(_scene: &'static mut PreparedScene) -> &'static PreparedScene {
 #[cfg(not(microtrace_sizing))]
 #[inline(never)]
 fn prepare(scene: &'static mut PreparedScene) -> &'static PreparedScene {
-    // From the scene prepared ahead at build time in the number type (build.rs): only the
-    // work that depends on the view and the light runs here.
-    match scene.prepare_ahead(&scene::AHEAD) {
+    // From the scene baked at build time in the number type (build.rs): its settings copied,
+    // its tables held where they are in flash.
+    match scene.prepare_baked(&scene::SCENE) {
         Ok(()) => scene,
         Err(error) => {
             print("microtrace: the scene does not prepare, line ");

@@ -28,26 +28,35 @@
 
 use core::mem::size_of;
 
+use microtrace::config::Config;
 use microtrace::optimize::shadow_culling::{BlockerSet, DirectionChord, LightReach};
+use microtrace::storage::Table;
 
 use crate::scene;
 
+/// Whether the scene's hierarchy of boxes is baked (its shadow rays' blockers are found by it:
+/// the render builds no shadow tables).
+const HIERARCHY_IN_FLASH: bool = <<scene::SceneConfig as Config>::Hierarchy<u16> as Table<u16>>::BAKED;
+/// Whether the lights' shadow tables are baked (the render builds none).
+const SHADOW_TABLES_IN_FLASH: bool = <<scene::SceneConfig as Config>::ShadowTables as Table<_>>::BAKED;
+/// The grid's pool entries per object built on the chip (none: a baked grid is in flash).
+const GRID_ENTRIES_PER_OBJECT: usize = <scene::SceneConfig as Config>::GRID_ENTRIES_PER_OBJECT;
+
 /// The stack the render's shadow tables take per object, or preparation's tables when none are
-/// built: a hierarchy in flash finds the shadow rays' blockers instead
-/// (`scene::HIERARCHY_IN_FLASH`), or the tables themselves are in flash
-/// (`scene::SHADOW_TABLES_IN_FLASH`).
-const TABLES_PER_OBJECT: usize = if scene::HIERARCHY_IN_FLASH || scene::SHADOW_TABLES_IN_FLASH { PREPARATION_PER_OBJECT } else { SHADOW_TABLES_PER_OBJECT };
+/// built: a hierarchy in flash finds the shadow rays' blockers instead, or the tables
+/// themselves are in flash.
+const TABLES_PER_OBJECT: usize = if HIERARCHY_IN_FLASH || SHADOW_TABLES_IN_FLASH { PREPARATION_PER_OBJECT } else { SHADOW_TABLES_PER_OBJECT };
 
 /// Preparation's tables per object on the stack when the chip builds its tables
 /// (optimize/acceleration.rs, `rebuild_with`: each object's screen capsule and primitive;
 /// optimize/grid.rs: its places in the grid's pool), twice: once is less than measured (tree-s6
 /// in `f32`, 40 bytes an object once, its peak 60 an object above the base), as a table made
-/// and then moved can be live twice. None for a scene prepared ahead, whose grid and view's
-/// tables are in flash (`GRID_ENTRIES_PER_OBJECT` 0): `rebuild_with` is not even linked.
-const PREPARATION_PER_OBJECT: usize = if scene::GRID_ENTRIES_PER_OBJECT == 0 {
+/// and then moved can be live twice. None for a baked scene, whose grid and view's tables are
+/// in flash (`GRID_ENTRIES_PER_OBJECT` 0): `rebuild_with` is not even linked.
+const PREPARATION_PER_OBJECT: usize = if GRID_ENTRIES_PER_OBJECT == 0 {
     0
 } else {
-    2 * (size_of::<microtrace::optimize::capsule::Capsule<scene::Number>>() + size_of::<microtrace::model::Primitive>() + scene::GRID_ENTRIES_PER_OBJECT * size_of::<u16>())
+    2 * (size_of::<microtrace::optimize::capsule::Capsule<scene::Number>>() + size_of::<microtrace::model::Primitive>() + GRID_ENTRIES_PER_OBJECT * size_of::<u16>())
 };
 
 /// The shadow tables per object (render/shadow_tables.rs: `with_shadow_culling`,
@@ -90,7 +99,7 @@ const _: () = {
     }
 };
 
-/// A sizing build (build.rs's `size_only`: more objects than it prepares ahead) that fits the
+/// A sizing build (build.rs's `size_only`: more objects than it bakes) that fits the
 /// RAM stops here, saying so; one that does not stopped above with what it needs.
 #[cfg(microtrace_sizing)]
 const _: () = {
@@ -106,9 +115,9 @@ const FITS_BUT_NOT_PREPARED: Text = Text::new()
     .number(scene::OBJECT_COUNT)
     .text(" objects fit the RAM (")
     .number(NEEDED_BYTES)
-    .text(" bytes) but the build prepares at most ")
+    .text(" bytes) but the build bakes at most ")
     .number(scene::PREPARED_AHEAD_AT_MOST)
-    .text(" ahead (PARSE_CAPACITY in firmware/build.rs)");
+    .text(" (microtrace::bake::BAKE_CAPACITY)");
 
 /// The message, written at compile time (a `const` panic takes a `&str`, not a format).
 const TOO_LARGE: Text = Text::new()

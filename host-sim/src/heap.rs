@@ -10,11 +10,15 @@ use microtrace::config::{Config, SolidStorage, DEFAULT_GRID_ENTRIES_PER_OBJECT, 
 use microtrace::model::{Object, PreparedSolidNode, MAX_HELD_SPANS, MAX_SOLID_STACK, MAX_SPANS};
 use microtrace::number::Number;
 use microtrace::scene::Prepared;
-use microtrace::storage::{List, Table};
+use microtrace::storage::{List, Table, Unset};
 
 /// A table of a length fixed when it is made, on the heap.
 #[derive(Clone, Debug)]
-pub struct Boxed<T>(Box<[T]>);
+pub struct Boxed<T>(Vec<T>);
+
+impl<T> Unset for Boxed<T> {
+    const UNSET: Self = Self(Vec::new());
+}
 
 impl<T: Copy> Table<T> for Boxed<T> {
     fn slots(&self) -> &[T] {
@@ -26,13 +30,22 @@ impl<T: Copy> Table<T> for Boxed<T> {
     }
 
     fn filled(count: usize, value: T) -> Self {
-        Self(vec![value; count].into_boxed_slice())
+        Self(vec![value; count])
+    }
+
+    fn hold(&mut self, baked: &'static [T]) -> usize {
+        self.0 = baked.to_vec();
+        baked.len()
     }
 }
 
 /// A list that grows as long as memory lasts.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Growing<T>(Vec<T>);
+
+impl<T> Unset for Growing<T> {
+    const UNSET: Self = Self(Vec::new());
+}
 
 impl<T> Default for Growing<T> {
     fn default() -> Self {
@@ -98,15 +111,16 @@ impl<N: Number> Config for Heap<N> {
     type Solids = Growing<PreparedSolidNode<N>>;
     type Palette = microtrace::config::OwnedPalette;
     type PerObject<T: Copy> = Boxed<T>;
-    type ViewTable<T: Copy> = Boxed<T>;
+    type ViewTable<T: Copy + Unset + 'static> = Boxed<T>;
     type PerObjectPerOtherLight<T: Copy> = Boxed<T>;
     type OtherLights<T: Clone> = heapless::Vec<T, { microtrace::model::MAX_LIGHTS - 1 }>;
     type PerObjectList<T: Clone> = Growing<T>;
-    type GridPool<T: Copy> = Boxed<T>;
+    type GridPool<T: Copy + Unset + 'static> = Boxed<T>;
     type SpaceEntries = Boxed<u32>;
     type BlockerLists = Boxed<u32>;
-    type Hierarchy<T: Copy> = Boxed<T>;
-    type ScreenCells<T: Copy> = Boxed<T>;
+    type Hierarchy<T: Copy + Unset + 'static> = Boxed<T>;
+    type ScreenCells<T: Copy + Unset + 'static> = Boxed<T>;
+    type ShadowTables = [microtrace::optimize::shadow_culling::ShadowTables<'static, N>; 0];
     type TreeStack<T: Clone> = heapless::Vec<T, DEFAULT_TREE_DEPTH>;
     type CornerRow = Boxed<[u8; 3]>;
     const MAX_OBJECTS: usize = usize::MAX;

@@ -367,7 +367,7 @@ fn the_spd_tree_from_nff_on_mps2_an386_and_lm3s6965evb_matches_the_host() {
 
 /// A scene of more objects than the blocker sets hold (Haines' tree at size 6: 256 objects, 7
 /// lights) gets its hierarchy of boxes made at build time and kept in flash (the chip has no
-/// `f64` to build one; `optimize::hierarchy_ahead`): it walks it for its shadow and secondary
+/// `f64` to build one; `optimize::baked_hierarchy`): it walks it for its shadow and secondary
 /// rays, needs no per-object shadow tables on the stack, and so fits the Cortex-M4F's 64 KB
 /// (it needed 157,840 bytes without), rendering the host's picture, which the host made without
 /// a hierarchy.
@@ -385,8 +385,8 @@ fn the_spd_tree_of_256_objects_walks_a_hierarchy_in_flash_on_mps2_an386() {
     let elf = std::fs::read(&run.elf).unwrap();
     let (symbols, _) = xtask::elf::flash_symbols(&elf).unwrap();
     let bytes = |name: &str| symbols.iter().find(|symbol| symbol.demangled.ends_with(name)).map(|symbol| symbol.bytes);
-    let nodes = bytes("::HIERARCHY_NODES_AHEAD").expect("tree-s6: no hierarchy's nodes in flash");
-    let order = bytes("::HIERARCHY_ORDER_AHEAD").expect("tree-s6: no hierarchy's order in flash");
+    let nodes = bytes("::HIERARCHY_NODES").expect("tree-s6: no hierarchy's nodes in flash");
+    let order = bytes("::HIERARCHY_ORDER").expect("tree-s6: no hierarchy's order in flash");
     assert!(nodes >= 32 * 64 && nodes % 32 == 0, "tree-s6: {nodes} bytes of nodes");
     assert!(order >= 2 * 256, "tree-s6: {order} bytes of the leaves' objects for 256 objects");
 }
@@ -409,8 +409,8 @@ fn snooker_fits_the_lm3s811evb() {
     let elf = std::fs::read(&run.elf).unwrap();
     let (symbols, _) = xtask::elf::flash_symbols(&elf).unwrap();
     let bytes = |name: &str| symbols.iter().find(|symbol| symbol.demangled.ends_with(name)).map(|symbol| symbol.bytes);
-    let cones = bytes("::SHADOW_CONES_AHEAD_0").expect("snooker: no light cones in flash");
-    let blockers = bytes("::SHADOW_BLOCKERS_AHEAD_0").expect("snooker: no blocker sets in flash");
+    let cones = bytes("::SHADOW_CONES_0").expect("snooker: no light cones in flash");
+    let blockers = bytes("::SHADOW_BLOCKERS_0").expect("snooker: no blocker sets in flash");
     let cone = std::mem::size_of::<microtrace::optimize::shadow_culling::DirectionChord<f32>>();
     let set = std::mem::size_of::<microtrace::optimize::shadow_culling::BlockerSet>();
     let objects = microtrace::parser::parse::<64>(&std::fs::read(scene_path("snooker.mts")).unwrap()).unwrap().objects.len();
@@ -419,7 +419,7 @@ fn snooker_fits_the_lm3s811evb() {
     // So were the tables that depend on the view: each object's eye (12 bytes in f32), extent
     // (16) and the test order (2) are in flash, and nothing that builds them is linked (the
     // capsules seen from the eye, `ScreenMap`).
-    for (table, each) in [("::VIEW_EYES_AHEAD", 12), ("::VIEW_EXTENTS_AHEAD", 16), ("::VIEW_ORDER_AHEAD", 2)] {
+    for (table, each) in [("::VIEW_EYES", 12), ("::VIEW_EXTENTS", 16), ("::VIEW_ORDER", 2)] {
         assert_eq!(bytes(table), Some((objects * each) as u64), "snooker: {table} is not {each} bytes for each of its {objects} objects in flash");
     }
     assert!(!symbols.iter().any(|symbol| symbol.demangled.contains("ScreenMap")), "snooker: the view's building code is linked");

@@ -498,7 +498,7 @@ mod area_tests {
     fn a_symbol_goes_to_its_module_or_its_crate() {
         assert_eq!(area("<microtrace::number::soft_float::SoftFloat as core::ops::arith::Add>::add"), "microtrace::number");
         assert_eq!(area("microtrace::render::direct_lighting::direct_lighting"), "microtrace::render");
-        assert_eq!(area("microtrace_firmware::scene::OBJECTS_AHEAD"), "microtrace_firmware::scene");
+        assert_eq!(area("microtrace_firmware::scene::OBJECTS"), "microtrace_firmware::scene");
         assert_eq!(area("microtrace_firmware::main"), "microtrace_firmware");
         assert_eq!(area("compiler_builtins::float::add::__addsf3"), "compiler_builtins");
         assert_eq!(area("__aeabi_fadd"), "(other)");

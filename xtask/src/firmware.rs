@@ -8,7 +8,7 @@ use std::process::{Command, Stdio};
 use std::sync::Mutex;
 use std::time::Duration;
 
-use microtrace::model::{Primitive, SceneDescription};
+use microtrace::model::Primitive;
 use microtrace::number::NumberKind;
 
 use crate::elf;
@@ -201,9 +201,8 @@ pub struct FirmwareRun {
 /// under this lock so that concurrent runs (the tests) never run each other's firmware.
 static BUILD_LOCK: Mutex<()> = Mutex::new(());
 
-/// The objects a scene may have at build time: firmware/build.rs's `PARSE_CAPACITY` (the tests
-/// check that both say the same).
-pub const FIRMWARE_SCENE_CAPACITY: usize = 512;
+/// The objects a scene may have at build time: what `microtrace::bake` bakes at most.
+pub const FIRMWARE_SCENE_CAPACITY: usize = microtrace::bake::BAKE_CAPACITY;
 
 /// The firmware's render size (`MICROTRACE_SIZE`): the OLED's.
 pub const FIRMWARE_SIZE: (u16, u16) = (128, 64);
@@ -378,16 +377,6 @@ pub fn scene_objects(scene: &Path) -> Result<usize, String> {
     parse_any_size(scene).map(|description| description.objects.len())
 }
 
-/// The scene parsed with the same parser and capacity as the firmware's build script, its
-/// errors in the one format of scene errors (docs/bad-input.md): `FILE:line N: reason`.
-fn parse_scene(scene: &Path) -> Result<Box<SceneDescription<FIRMWARE_SCENE_CAPACITY>>, String> {
-    let text = std::fs::read(scene).map_err(|error| format!("scene {}: {error}", scene.display()))?;
-    let parsed: Result<SceneDescription<FIRMWARE_SCENE_CAPACITY>, _> = microtrace::parser::parse_file(&scene.to_string_lossy(), &text);
-    let description = parsed.map_err(|error| if error.line == 0 { format!("{}: {error}", scene.display()) } else { format!("{}:{error}", scene.display()) })?;
-    Ok(Box::new(description))
-}
-
-
 /// Builds the firmware with the given primitive features instead of the scene's own (for
 /// checking that a mismatch fails the build); returns the ELF path or the build's errors.
 pub fn build_with_primitives(options: &FirmwareOptions, primitive_features: &[&str]) -> Result<PathBuf, String> {
@@ -411,12 +400,6 @@ fn build(options: &FirmwareOptions, scene: &Path, primitive_features: &[&str]) -
     if options.framebuffer {
         features.push("framebuffer");
     }
-    // The grid's pool sized by what the scene's grid holds at the firmware's size (a scene that
-    // does not parse is left to the build script, which says why).
-    let grid_entries = match parse_scene(scene) {
-        Ok(description) => crate::grid_pool::entries_per_object(&description, &options.number, &options.optimizations, options.size)?.to_string(),
-        Err(_) => String::new(),
-    };
     let output = Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
         .args(["build", "--release", "--quiet", "--no-default-features"])
         .args(["--features", &features.join(",")])
@@ -433,7 +416,6 @@ fn build(options: &FirmwareOptions, scene: &Path, primitive_features: &[&str]) -
         .env("MICROTRACE_NUMBER", &options.number)
         .env("MICROTRACE_OPT", &options.optimizations)
         .env("MICROTRACE_SIZE", format!("{}x{}", options.size.0, options.size.1))
-        .env("MICROTRACE_GRID_ENTRIES_PER_OBJECT", grid_entries)
         .env("MICROTRACE_FAULT_TEST", if options.provoke.is_some() { "1" } else { "0" })
         .env("MICROTRACE_STACK_RESERVE", options.stack_reserve.map(|bytes| bytes.to_string()).unwrap_or_default())
         .stdin(Stdio::null())

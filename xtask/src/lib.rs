@@ -11,7 +11,6 @@ pub mod budget;
 pub mod elf;
 pub mod example;
 pub mod firmware;
-pub mod grid_pool;
 pub mod host_render;
 pub mod oled;
 pub mod pico;

@@ -11,6 +11,10 @@ pub struct Vector3<N> {
     pub z: N,
 }
 
+impl<N: crate::storage::Unset> crate::storage::Unset for Vector3<N> {
+    const UNSET: Self = Self { x: N::UNSET, y: N::UNSET, z: N::UNSET };
+}
+
 impl<N: Number> Vector3<N> {
     pub const fn new(x: N, y: N, z: N) -> Self {
         Self { x, y, z }

@@ -16,6 +16,10 @@ pub struct Extent {
     pub diagonal: [u16; 4],
 }
 
+impl crate::storage::Unset for Extent {
+    const UNSET: Self = Self { first_column: 0, last_column: 0, first_row: 0, last_row: 0, diagonal: [0; 4] };
+}
+
 impl Extent {
     pub const EMPTY: Self = Self { first_column: 1, last_column: 0, first_row: 1, last_row: 0, diagonal: [1, 0, 1, 0] };
     /// Every pixel of any screen: what is not yet known to be smaller.

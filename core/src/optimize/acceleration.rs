@@ -4,21 +4,21 @@
 
 use crate::camera::{Camera, PixelPosition};
 use crate::geometry::{AffineTransform, Vector3};
-use crate::config::{Arrays, Config};
-use crate::storage::{Index, Table};
-use crate::model::Objects;
+use crate::config::Config;
+use crate::storage::{Index, Table, Unset};
 use crate::number::Number;
 use crate::model::{ObjectDescription, Optimizations, Primitive};
 
 use super::bounding_volume::ObjectGeometry;
 use super::capsule::{Capsule, ScreenMap};
 use super::extents::Extent;
-use super::grid::{Grid, GridAhead};
+use super::grid::{Grid, GridParts};
 use super::projection::Screen;
 use super::build_options::SILHOUETTES;
-use super::shadow_culling::{ShadowBound, ShadowTablesAhead};
+use super::shadow_culling::{ShadowBound, ShadowTables};
+use super::bvh::Bvh;
 #[cfg(feature = "acceleration-tables")]
-use super::bvh::{Bvh, BvhNode};
+use super::bvh::BvhNode;
 use super::{capsule, grid, projection, shadow_culling, sortlist};
 
 /// Choices beyond the thesis; [`Tuning::IMPROVED`] is the default, [`Tuning::THESIS`] is the
@@ -44,7 +44,8 @@ impl Tuning {
 
 /// What the optimizations derive per object from the bounding volumes at preprocess time.
 /// Per object: its place in the test order (a `Config::Index`), its extent (4 `u16`), a depth bound (`N`)
-/// and a shadow bounding capsule (8 `N`); per scene: the grid.
+/// and a shadow bounding capsule (8 `N`); per scene: the grid. Each table is the `Config`'s
+/// storage: built here into RAM, or a baked scene's in flash ([`Acceleration::hold_parts`]).
 pub struct Acceleration<C: Config> {
     count: usize,
     optimizations: Optimizations,
@@ -59,43 +60,38 @@ pub struct Acceleration<C: Config> {
     stadiums: C::ViewTable<Option<capsule::Stadium>>,
     #[cfg(feature = "acceleration-tables")]
     shadow: C::ViewTable<ShadowBound<C::Number>>,
-    /// The shadow rays' hierarchy (`Config::HIERARCHY`, more than 128 objects): its nodes, the
-    /// objects of its leaves, and how many nodes are built (0: none).
+    /// The shadow rays' hierarchy (`Config::HIERARCHY`, more than 128 objects, or baked): its
+    /// nodes, the objects of its leaves, and how many nodes are in use (0: none).
     #[cfg(feature = "acceleration-tables")]
     hierarchy: C::Hierarchy<BvhNode<C::Number>>,
     #[cfg(feature = "acceleration-tables")]
     hierarchy_order: C::Hierarchy<C::Index>,
     #[cfg(feature = "acceleration-tables")]
     hierarchy_nodes: usize,
-    /// A hierarchy built ahead (the firmware's, at build time, in flash): used in place of
-    /// one built here when the optimizations would build one (`Acceleration::hierarchy`).
-    #[cfg(feature = "acceleration-tables")]
-    hierarchy_ahead: Option<Bvh<'static, C::Number, C::Index>>,
     grid: Grid<C>,
-    /// A grid made ahead for the view (the firmware's, at build time, in flash), used in place
-    /// of `grid` when the optimizations ask for a grid (`Acceleration::grid_in_flash`).
-    grid_ahead: Option<GridAhead<'static, C::Number, C::Index>>,
-    /// The lights' shadow tables made ahead for this view and these lights (the firmware's, in
-    /// flash; `Config::SHADOW_TABLES_AHEAD`): a render uses them instead of building its own.
-    /// An `Option` so that an unprepared scene is all zeros (`.bss`, not an image in flash).
-    shadow_tables_ahead: Option<&'static [ShadowTablesAhead<'static, C::Number>]>,
-    /// The tables above made ahead for the view (the firmware's, in flash;
-    /// `Config::VIEW_AHEAD`), read in their place.
-    view_ahead: Option<ViewAhead<'static, C::Number, C::Index>>,
+    /// The lights' shadow tables kept with the scene (a baked scene's: `Config::ShadowTables`),
+    /// one per light; none where a render builds its own.
+    shadow_tables: C::ShadowTables,
 }
 
-/// The per-object tables that depend on the view, made ahead (the firmware's, at build time,
-/// in flash): the test order and each object's extent, depth bound, stadium and shadow capsule
-/// as [`Acceleration::rebuild_from_bounds`] makes them, and its eye in its own space as the
-/// scene places it — bit for bit what the chip's preparation would make.
+/// The tables that depend on the view by their parts, borrowed: what a preparation for a view
+/// builds ([`Acceleration::parts`]), and what a scene baked for a fixed view and light keeps in
+/// flash and reads in their place ([`Acceleration::hold_parts`]) — the test order and each
+/// object's extent, depth bound, stadium and shadow capsule; the screen grid and the shadow
+/// rays' hierarchy where there are; each light's shadow tables where a render builds them.
 #[derive(Clone, Copy, Debug)]
-pub struct ViewAhead<'a, N, I> {
+pub struct AccelerationParts<'a, N, I> {
     pub order: &'a [I],
     pub extents: &'a [Extent],
     pub near: &'a [N],
     pub stadiums: &'a [Option<capsule::Stadium>],
     pub shadow: &'a [ShadowBound<N>],
-    pub eyes: &'a [Vector3<N>],
+    /// The screen grid (`None`: none in use).
+    pub grid: Option<GridParts<'a, N, I>>,
+    /// The shadow and secondary rays' hierarchy (`None`: none in use).
+    pub hierarchy: Option<Bvh<'a, N, I>>,
+    /// Each light's shadow tables (empty: none made, or none a render would build).
+    pub shadow_tables: &'a [ShadowTables<'a, N>],
 }
 
 impl<C: Config> core::fmt::Debug for Acceleration<C> {
@@ -123,21 +119,13 @@ impl<C: Config> Clone for Acceleration<C> {
             hierarchy_order: self.hierarchy_order.clone(),
             #[cfg(feature = "acceleration-tables")]
             hierarchy_nodes: self.hierarchy_nodes,
-            #[cfg(feature = "acceleration-tables")]
-            hierarchy_ahead: self.hierarchy_ahead,
             grid: self.grid.clone(),
-            grid_ahead: self.grid_ahead,
-            shadow_tables_ahead: self.shadow_tables_ahead,
-            view_ahead: self.view_ahead,
+            shadow_tables: self.shadow_tables.clone(),
         }
     }
 }
 
-impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize, const AHEAD: u8, const VIEW: usize> Acceleration<Arrays<N, K, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS, AHEAD, VIEW>>
-where
-    S: crate::config::SolidStorage<N> + 'static,
-    P: crate::config::PaletteStorage + 'static,
-{
+impl<C: Config> Acceleration<C> {
     /// Every byte zero, nothing built: the value before [`Acceleration::rebuild`] (a `static`
     /// holding it costs zero-initialised RAM and no flash).
     pub const UNSET: Self = Self {
@@ -145,24 +133,20 @@ where
         optimizations: Optimizations::NONE,
         tuning: Tuning::THESIS,
         screen: Screen::UNSET,
-        order: [0; VIEW],
-        extents: [Extent { first_column: 0, last_column: 0, first_row: 0, last_row: 0, diagonal: [0; 4] }; VIEW],
-        near: [N::ZEROED; VIEW],
-        stadiums: [None; VIEW],
+        order: Unset::UNSET,
+        extents: Unset::UNSET,
+        near: Unset::UNSET,
+        stadiums: Unset::UNSET,
         #[cfg(feature = "acceleration-tables")]
-        shadow: [ShadowBound::UNSET; VIEW],
+        shadow: Unset::UNSET,
         #[cfg(feature = "acceleration-tables")]
-        hierarchy: [],
+        hierarchy: Unset::UNSET,
         #[cfg(feature = "acceleration-tables")]
-        hierarchy_order: [],
+        hierarchy_order: Unset::UNSET,
         #[cfg(feature = "acceleration-tables")]
         hierarchy_nodes: 0,
-        #[cfg(feature = "acceleration-tables")]
-        hierarchy_ahead: None,
         grid: Grid::UNSET,
-        grid_ahead: None,
-        shadow_tables_ahead: None,
-        view_ahead: None,
+        shadow_tables: Unset::UNSET,
     };
 }
 
@@ -178,13 +162,13 @@ const REFERENCES_PER_OBJECT: usize = 2;
 /// boxes' overlap against the sets' sizes.
 pub const HIERARCHY_ABOVE: usize = 60;
 
-/// The firmware's scene of more objects than this gets one, made ahead ([`hierarchy_ahead`]):
+/// A baked scene of more objects than this gets one, baked ([`baked_hierarchy`]):
 /// the blocker sets' capacity. Below it the sets cost the Cortex-M4F less than the walk (balls2,
 /// 93 objects: 120.6 M instructions a frame with them, 140.6 M with the hierarchy); above it the
 /// per-object shadow tables the sets need fill the stack (tree-s6, 256 objects and 7 lights:
 /// 157,840 bytes of RAM without, it runs in 64 KB with).
 #[cfg(feature = "acceleration-tables")]
-pub const HIERARCHY_AHEAD_ABOVE: usize = super::shadow_culling::BlockerSet::CAPACITY;
+pub const BAKED_HIERARCHY_ABOVE: usize = super::shadow_culling::BlockerSet::CAPACITY;
 
 impl<N: Number, C: Config<Number = N>> Acceleration<C> {
     /// Nothing built, tables for `count` objects (as many as an array holds): [`Acceleration::UNSET`]
@@ -207,12 +191,8 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
             hierarchy_order: C::Hierarchy::filled(if C::HIERARCHY { REFERENCES_PER_OBJECT * count } else { 0 }, C::Index::default()),
             #[cfg(feature = "acceleration-tables")]
             hierarchy_nodes: 0,
-            #[cfg(feature = "acceleration-tables")]
-            hierarchy_ahead: None,
             grid: Grid::inactive(count),
-            grid_ahead: None,
-            shadow_tables_ahead: None,
-            view_ahead: None,
+            shadow_tables: Unset::UNSET,
         }
     }
 
@@ -239,8 +219,8 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
         self.rebuild_with(camera, optimizations, tuning, count, of);
     }
 
-    /// [`Acceleration::rebuild`] from each object's bounds prepared ahead in the number type
-    /// (the firmware's, made at build time): no `f64` at all. The same structures as
+    /// [`Acceleration::rebuild`] from each object's bounds made at build time in the number type
+    /// (a baked scene's whose view moves): no `f64` at all. The same structures as
     /// `rebuild` for the same bounds, but that objects reaching the eye plane cover the whole
     /// screen (the eye-plane clip needs the `f64` silhouettes).
     pub fn rebuild_from_bounds(&mut self, camera: &Camera<N>, optimizations: Optimizations, bounds: &[ObjectBounds<N>]) {
@@ -248,8 +228,8 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
         self.rebuild_with(camera, optimizations, Tuning::IMPROVED, count, |index| bounds.get(index).map(|b| (*b, None)));
     }
 
-    /// What every build of the tables and every hold of tables made ahead sets first: the
-    /// settings, the objects' count and the screen for `camera`, which it returns.
+    /// What every build of the tables and every hold of baked tables sets first: the settings,
+    /// the objects' count and the screen for `camera`, which it returns.
     fn settle(&mut self, camera: &Camera<N>, optimizations: Optimizations, tuning: Tuning, count: usize) -> Screen {
         self.screen = if SILHOUETTES { Screen::new(camera) } else { Screen::sized(camera.width(), camera.height()) };
         self.count = count;
@@ -300,9 +280,9 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
             // silhouette clipped at the eye plane (`projection`, B16) does better. Only such
             // objects with their geometry take that path (the thesis scenes have none); from
             // bounds alone, every build does as the firmware does (so a host builds the chip's
-            // grid exactly: `scene::ahead`).
+            // grid exactly: `crate::bake`).
             let reaches_eye = SILHOUETTES && geometry.is_some() && capsules && map.cover(&capsule) == capsule::Covered::Whole && capsule.radius != N::MAX;
-            // The f64 paths need the geometry: without it (bounds prepared ahead), the whole
+            // The f64 paths need the geometry: without it (bounds made at build time), the whole
             // screen and no depth bound.
             let silhouette = |tight: bool| match &geometry {
                 Some(geometry) if SILHOUETTES => Extent::of(&screen, &screen.project_object(geometry, tight)),
@@ -339,7 +319,7 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
         #[cfg(feature = "acceleration-tables")]
         {
             self.hierarchy_nodes = 0;
-            if C::HIERARCHY && tuning.shadow_culling && optimizations.extents && self.hierarchy_in_flash().is_none() && count > HIERARCHY_ABOVE {
+            if C::HIERARCHY && tuning.shadow_culling && optimizations.extents && count > HIERARCHY_ABOVE {
                 self.hierarchy_nodes = build_hierarchy::<C>(count, &of, self.hierarchy.slots_mut(), self.hierarchy_order.slots_mut());
             }
         }
@@ -349,8 +329,7 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
                 sortlist::sort_by_bound::<C, _>(order, |i| near.get(i).copied().unwrap_or(-N::MAX));
             }
         }
-        // A grid made ahead for this view (the firmware's) is used as it is.
-        if !optimizations.grid || self.grid_in_flash().is_some() {
+        if !optimizations.grid {
             self.grid.clear();
             return;
         }
@@ -399,64 +378,65 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
 
     /// Grid: its cells across and down, `None` without a grid.
     pub fn grid_side(&self) -> Option<u16> {
-        match self.grid_in_flash() {
-            Some(ahead) => Some(ahead.side),
-            None => self.grid.side(),
-        }
+        self.grid.side()
     }
 
     /// Grid: the entries of the pixel's cell and the pixel's offsets in it; `None` without a grid.
     #[inline]
     pub fn grid_cell(&self, pixel: PixelPosition) -> Option<grid::CellAt<'_, C>> {
-        if let Some(ahead) = self.grid_in_flash() {
-            return Some(ahead.cell(pixel.column, pixel.row));
-        }
         self.grid.cell(pixel.column, pixel.row)
     }
 
-    /// The grid made ahead, when the optimizations ask for a grid.
-    #[inline]
-    fn grid_in_flash(&self) -> Option<&GridAhead<'static, N, C::Index>> {
-        self.grid_ahead.as_ref().filter(|_| C::GRID_AHEAD && self.optimizations.grid)
-    }
-
-    /// Holds a grid made ahead for the view the scene is prepared for (the firmware's, in
-    /// flash), for the rebuilds from now on, which use it when the optimizations ask for a grid.
-    pub fn hold_grid_ahead(&mut self, grid: Option<GridAhead<'static, N, C::Index>>) {
-        self.grid_ahead = grid.filter(|_| C::GRID_AHEAD);
-    }
-
-    /// Holds the lights' shadow tables made ahead for the view and lights the scene is prepared
-    /// for (the firmware's, in flash): with [`Config::SHADOW_TABLES_AHEAD`], a render uses them
-    /// and builds none.
-    pub fn hold_shadow_tables_ahead(&mut self, tables: &'static [ShadowTablesAhead<'static, N>]) {
-        self.shadow_tables_ahead = Some(tables).filter(|_| C::SHADOW_TABLES_AHEAD);
-    }
-
-    /// The lights' shadow tables made ahead (empty: none), one per light in the scene's order.
-    #[inline]
-    pub fn shadow_tables_ahead(&self) -> &'static [ShadowTablesAhead<'static, N>] {
-        self.shadow_tables_ahead.unwrap_or(&[])
-    }
-
-    /// Holds the per-object tables made ahead for the view the scene is prepared for (the
-    /// firmware's, in flash), in place of [`Acceleration::rebuild_from_bounds`]: with
-    /// [`Config::VIEW_AHEAD`] they are read in place of the tables here, which hold nothing.
-    pub fn hold_view_ahead(&mut self, camera: &Camera<N>, optimizations: Optimizations, view: ViewAhead<'static, N, C::Index>) {
-        self.settle(camera, optimizations, Tuning::IMPROVED, view.order.len().min(C::Index::MAX));
+    /// Holds the tables baked for the view and the lights the scene is prepared for (a baked
+    /// scene's, in flash), in place of [`Acceleration::rebuild_from_bounds`]: each is read
+    /// through the `Config`'s storage from now on (a view keeps the slice; storage of its own
+    /// copies it; a grid, hierarchy or shadow table it cannot hold is left unused: the same
+    /// picture, more tests). False when it cannot hold the per-object tables, which every
+    /// render reads.
+    #[must_use]
+    pub fn hold_parts(&mut self, camera: &Camera<N>, optimizations: Optimizations, parts: &AccelerationParts<'static, N, C::Index>) -> bool {
+        let count = parts.order.len().min(C::Index::MAX);
+        self.settle(camera, optimizations, Tuning::IMPROVED, count);
+        let held = [
+            self.order.hold(parts.order),
+            self.extents.hold(parts.extents),
+            self.near.hold(parts.near),
+            self.stadiums.hold(parts.stadiums),
+            #[cfg(feature = "acceleration-tables")]
+            self.shadow.hold(parts.shadow),
+        ];
+        if held.iter().any(|&slots| slots < count) {
+            return false;
+        }
         #[cfg(feature = "acceleration-tables")]
         {
             self.hierarchy_nodes = 0;
+            if let Some(bvh) = parts.hierarchy {
+                let nodes = self.hierarchy.hold(bvh.nodes);
+                if nodes == bvh.nodes.len() && self.hierarchy_order.hold(bvh.order) == bvh.order.len() {
+                    self.hierarchy_nodes = nodes;
+                }
+            }
         }
-        self.grid.clear();
-        self.view_ahead = Some(view).filter(|_| C::VIEW_AHEAD);
+        self.grid.hold(parts.grid.filter(|_| optimizations.grid));
+        if self.shadow_tables.hold(parts.shadow_tables) < parts.shadow_tables.len() {
+            self.shadow_tables = Unset::UNSET;
+        }
+        true
     }
 
-    /// The tables that depend on the view as built here, by their parts, with the scene's
-    /// `eyes`: what the firmware's build writes ahead.
-    pub fn view_parts<'a>(&'a self, eyes: &'a [Vector3<N>]) -> ViewAhead<'a, N, C::Index> {
+    /// The lights' shadow tables kept with the scene (empty: none; a render builds its own),
+    /// one per light in the scene's order.
+    #[inline]
+    pub fn shadow_tables(&self) -> &[ShadowTables<'static, N>] {
+        self.shadow_tables.slots()
+    }
+
+    /// The tables that depend on the view as built here, by their parts, with the lights'
+    /// `shadow_tables`: what [`crate::bake`] writes into flash.
+    pub fn parts<'a>(&'a self, shadow_tables: &'a [ShadowTables<'a, N>]) -> AccelerationParts<'a, N, C::Index> {
         let count = self.count;
-        ViewAhead {
+        AccelerationParts {
             order: self.order.slots().get(..count).unwrap_or(&[]),
             extents: self.extents.slots().get(..count).unwrap_or(&[]),
             near: self.near.slots().get(..count).unwrap_or(&[]),
@@ -465,58 +445,19 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
             shadow: self.shadow.slots().get(..count).unwrap_or(&[]),
             #[cfg(not(feature = "acceleration-tables"))]
             shadow: &[],
-            eyes: eyes.get(..count).unwrap_or(&[]),
+            grid: self.grid.parts(),
+            #[cfg(feature = "acceleration-tables")]
+            hierarchy: self.hierarchy(),
+            #[cfg(not(feature = "acceleration-tables"))]
+            hierarchy: None,
+            shadow_tables,
         }
-    }
-
-    /// The held tables made ahead for the view (`Config::VIEW_AHEAD`).
-    #[inline]
-    fn view_in_flash(&self) -> Option<&ViewAhead<'static, N, C::Index>> {
-        self.view_ahead.as_ref().filter(|_| C::VIEW_AHEAD)
-    }
-
-    #[inline]
-    fn order_table(&self) -> &[C::Index] {
-        self.view_in_flash().map_or(self.order.slots(), |view| view.order)
-    }
-
-    #[inline]
-    fn extents_table(&self) -> &[Extent] {
-        self.view_in_flash().map_or(self.extents.slots(), |view| view.extents)
-    }
-
-    #[inline]
-    fn near_table(&self) -> &[N] {
-        self.view_in_flash().map_or(self.near.slots(), |view| view.near)
-    }
-
-    #[inline]
-    fn stadiums_table(&self) -> &[Option<capsule::Stadium>] {
-        self.view_in_flash().map_or(self.stadiums.slots(), |view| view.stadiums)
-    }
-
-    #[cfg(feature = "acceleration-tables")]
-    #[inline]
-    fn shadow_table(&self) -> &[ShadowBound<N>] {
-        self.view_in_flash().map_or(self.shadow.slots(), |view| view.shadow)
-    }
-
-    /// Each object's eye made ahead (`Config::VIEW_AHEAD`; empty otherwise).
-    #[inline]
-    pub fn eyes_ahead(&self) -> &'static [Vector3<N>] {
-        self.view_in_flash().map_or(&[], |view| view.eyes)
-    }
-
-    /// The grid as built, by its parts (`None`: none active): what the firmware's build writes
-    /// ahead.
-    pub fn grid_parts(&self) -> Option<GridAhead<'_, N, C::Index>> {
-        self.grid.ahead()
     }
 
     /// Every object, in test order (sorted by depth bound with Sortlist).
     #[inline]
     pub fn order(&self) -> &[C::Index] {
-        self.order_table().get(..self.count).unwrap_or(&[])
+        self.order.slots().get(..self.count).unwrap_or(&[])
     }
 
     pub fn tuning(&self) -> Tuning {
@@ -530,7 +471,7 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
     /// ray–object tests, 63 K fewer instructions).
     #[inline]
     pub fn in_extent(&self, object: usize, pixel: PixelPosition) -> bool {
-        self.extents_table().get(object).is_some_and(|extent| extent.contains(pixel.column, pixel.row))
+        self.extents.slots().get(object).is_some_and(|extent| extent.contains(pixel.column, pixel.row))
     }
 
     /// Sortlist is on (for the grid's per-entry bounds).
@@ -559,25 +500,25 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
         if !self.optimizations.extents && !tight {
             return false;
         }
-        let Some(extent) = self.extents_table().get(object) else { return false };
+        let Some(extent) = self.extents.slots().get(object) else { return false };
         (self.optimizations.extents && !extent.contains(pixel.column, pixel.row))
             || (tight
                 && (!extent.diagonals_contain(pixel.column, pixel.row, self.screen.height)
-                    || self.stadiums_table().get(object).copied().flatten().is_some_and(|stadium| !stadium.contains(pixel.column, pixel.row))))
+                    || self.stadiums.slots().get(object).copied().flatten().is_some_and(|stadium| !stadium.contains(pixel.column, pixel.row))))
     }
 
     /// Sortlist: whether every hit on `object` (and so on every later candidate) lies beyond
     /// the nearest hit so far, `t`. Strict, so an equal `t` is still tested.
     #[inline]
     pub fn beyond(&self, object: usize, t: N) -> bool {
-        self.sorts() && self.near_table().get(object).is_some_and(|near| *near > t)
+        self.sorts() && self.near.slots().get(object).is_some_and(|near| *near > t)
     }
 
     /// The object's view from the light for the per-render shadow table (always meeting
     /// every shadow ray without the `acceleration-tables` feature).
     pub fn light_footprint(&self, object: usize, light: shadow_culling::LightPosition<N>) -> shadow_culling::LightFootprint<N> {
         #[cfg(feature = "acceleration-tables")]
-        if let Some(bound) = self.shadow_table().get(object) {
+        if let Some(bound) = self.shadow.slots().get(object) {
             return bound.footprint(light);
         }
         let _ = (object, light);
@@ -587,7 +528,7 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
     #[inline]
     pub fn may_shadow(&self, object: usize, point: Vector3<N>, direction: Vector3<N>, length: N) -> bool {
         #[cfg(feature = "acceleration-tables")]
-        if let Some(bound) = self.shadow_table().get(object) {
+        if let Some(bound) = self.shadow.slots().get(object) {
             return bound.may_block(point, direction, length);
         }
         let _ = (object, point, direction, length);
@@ -604,63 +545,39 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
 
     /// Whether the grid is in use (on, and its pool did not overflow).
     pub fn grid_active(&self) -> bool {
-        self.grid_in_flash().is_some() || self.grid.is_active()
+        self.grid.is_active()
     }
 
     /// Entries over all grid cells.
     pub fn grid_entries(&self) -> usize {
-        match self.grid_in_flash() {
-            Some(ahead) => ahead.entries(),
-            None => self.grid.entries(),
-        }
+        self.grid.entries()
     }
 
     /// The entries the grid's pool holds ([`Config::GRID_ENTRIES_PER_OBJECT`] per object; a
-    /// grid made ahead holds exactly its entries).
+    /// baked grid holds exactly its entries).
     pub fn grid_capacity(&self) -> usize {
-        match self.grid_in_flash() {
-            Some(ahead) => ahead.entries(),
-            None => self.grid.capacity(),
-        }
+        self.grid.capacity()
     }
 
     /// Sortlist's lower bound of `t` for the object, as the render uses it (`None`: none known,
     /// or Sortlist off).
     pub fn near_bound(&self, object: usize) -> Option<N> {
-        self.near_table().get(object).copied().filter(|near| *near != -N::MAX)
+        self.near.slots().get(object).copied().filter(|near| *near != -N::MAX)
     }
 
     /// The object's silhouette as a stadium, when it has one (our tuning).
     pub fn stadium(&self, object: usize) -> Option<capsule::Stadium> {
-        self.stadiums_table().get(object).copied().flatten()
+        self.stadiums.slots().get(object).copied().flatten()
     }
 
     pub fn extent(&self, object: usize) -> Option<Extent> {
-        self.extents_table().get(object).copied()
-    }
-
-    /// Holds a hierarchy built ahead ([`hierarchy_ahead`]; the firmware's, in flash) for the
-    /// rebuilds from now on, which use it where they would build one.
-    #[cfg(feature = "acceleration-tables")]
-    pub fn hold_hierarchy_ahead(&mut self, hierarchy: Option<Bvh<'static, N, C::Index>>) {
-        self.hierarchy_ahead = hierarchy.filter(|hierarchy| C::HIERARCHY_AHEAD && !hierarchy.nodes.is_empty());
-    }
-
-    /// The hierarchy made ahead, when the optimizations would build one (Extents and shadow
-    /// culling on).
-    #[cfg(feature = "acceleration-tables")]
-    #[inline]
-    fn hierarchy_in_flash(&self) -> Option<Bvh<'static, N, C::Index>> {
-        self.hierarchy_ahead.filter(|_| C::HIERARCHY_AHEAD && self.tuning.shadow_culling && self.optimizations.extents)
+        self.extents.slots().get(object).copied()
     }
 
     /// The shadow and secondary rays' hierarchy, when the scene has one (`Config::HIERARCHY`,
-    /// or one held ahead).
+    /// or a baked one).
     #[cfg(feature = "acceleration-tables")]
     pub fn hierarchy(&self) -> Option<Bvh<'_, N, C::Index>> {
-        if let Some(ahead) = self.hierarchy_in_flash() {
-            return Some(ahead);
-        }
         let nodes = self.hierarchy.slots().get(..self.hierarchy_nodes).filter(|nodes| !nodes.is_empty())?;
         Some(Bvh { nodes, order: self.hierarchy_order.slots() })
     }
@@ -702,14 +619,14 @@ pub struct HierarchyScratch<'a> {
     pub owners: &'a mut [usize],
 }
 
-/// The hierarchy a firmware's scene of `objects` gets (none for [`HIERARCHY_AHEAD_ABOVE`]
+/// The hierarchy a baked scene of `objects` gets (none for [`BAKED_HIERARCHY_ABOVE`]
 /// objects or fewer), built from the geometry the tracer renders in `N`, as a host's
-/// preparation builds it: what the firmware's build script writes ahead into flash (the chip
+/// preparation builds it: what [`crate::bake`] writes into flash (the chip
 /// has no `f64` to build one). `nodes` and `order` as long as the references
 /// ([`hierarchy_references`]); the hierarchy is the parts of them it used.
 #[cfg(feature = "acceleration-tables")]
-pub fn hierarchy_ahead<'a, N: Number, I: Index>(objects: &[ObjectDescription], scratch: HierarchyScratch<'_>, nodes: &'a mut [BvhNode<N>], order: &'a mut [I]) -> Option<Bvh<'a, N, I>> {
-    if objects.len() <= HIERARCHY_AHEAD_ABOVE {
+pub fn baked_hierarchy<'a, N: Number, I: Index>(objects: &[ObjectDescription], scratch: HierarchyScratch<'_>, nodes: &'a mut [BvhNode<N>], order: &'a mut [I]) -> Option<Bvh<'a, N, I>> {
+    if objects.len() <= BAKED_HIERARCHY_ABOVE {
         return None;
     }
     let (used, references) = build_hierarchy_in(objects.len(), &|index| objects.get(index).and_then(rendered_geometry::<N>), scratch, nodes, order);
@@ -773,8 +690,8 @@ impl<N: Number> ObjectBounds<N> {
     }
 
     /// [`ObjectBounds::of`], or no bounds at all (the object tested everywhere) for a singular
-    /// transform: what the firmware's build prepares ahead.
-    pub fn ahead(description: &ObjectDescription) -> Self {
+    /// transform: what [`crate::bake`] writes.
+    pub fn or_everywhere(description: &ObjectDescription) -> Self {
         Self::of(description).unwrap_or(Self { primitive: description.primitive, capsule: Capsule::UNSET, shadow: ShadowBound::always() })
     }
 }

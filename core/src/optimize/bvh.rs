@@ -29,6 +29,10 @@ impl<N: Number> BvhNode<N> {
     pub const UNSET: Self = Self { low: [N::ZEROED; 3], high: [N::ZEROED; 3], first: 0, count: 0 };
 }
 
+impl<N: Number> crate::storage::Unset for BvhNode<N> {
+    const UNSET: Self = Self::UNSET;
+}
+
 /// The most objects a leaf holds.
 const LEAF_OBJECTS: usize = 4;
 /// Bins of the surface area heuristic.

@@ -24,9 +24,8 @@ use core::num::NonZeroU16;
 
 use super::capsule::Stadium;
 use super::extents::Extent;
-use crate::config::{Arrays, Config};
-use crate::storage::{Index, Table};
-use crate::model::Objects;
+use crate::config::Config;
+use crate::storage::{Index, Table, Unset};
 use crate::number::Number;
 use super::pixelbuffer::band_span;
 use super::projection::{Projected, Screen};
@@ -64,6 +63,10 @@ pub struct Entry<I> {
     pub object: I,
     pub columns: u16,
     pub rows: u16,
+}
+
+impl<I: crate::storage::Unset> crate::storage::Unset for Entry<I> {
+    const UNSET: Self = Self { object: I::UNSET, columns: 0, rows: 0 };
 }
 
 /// A pixel's cell: its entries, their depth bounds, and the pixel's offsets from the cell's
@@ -104,20 +107,10 @@ impl<C: Config> Clone for Grid<C> {
     }
 }
 
-impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize, const AHEAD: u8, const VIEW: usize> Grid<Arrays<N, K, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS, AHEAD, VIEW>>
-where
-    S: crate::config::SolidStorage<N> + 'static,
-    P: crate::config::PaletteStorage + 'static,
-{
+impl<C: Config> Grid<C> {
     /// Every byte zero, inactive: the value before [`Grid::rebuild`] (a `static` holding it
     /// costs zero-initialised RAM and no flash).
-    pub const UNSET: Self = Self {
-        cells: None,
-        side: 0,
-        starts: [0; CELLS + 1],
-        pool: [[Entry { object: 0, columns: 0, rows: 0 }; POOL]; K],
-        depth: [[N::ZEROED; POOL]; K],
-    };
+    pub const UNSET: Self = Self { cells: None, side: 0, starts: Unset::UNSET, pool: Unset::UNSET, depth: Unset::UNSET };
 }
 
 impl<N: Number, C: Config<Number = N>> Grid<C> {
@@ -375,18 +368,30 @@ impl<N: Number, C: Config<Number = N>> Grid<C> {
     #[inline]
     pub fn cell(&self, column: u16, row: u16) -> Option<CellAt<'_, C>> {
         let CellSize { width, height } = self.cells?;
-        Some(GridAhead { width, height, side: self.side, starts: self.starts.slots(), pool: self.pool.slots(), depth: self.depth.slots() }.cell(column, row))
+        Some(GridParts { width, height, side: self.side, starts: self.starts.slots(), pool: self.pool.slots(), depth: self.depth.slots() }.cell(column, row))
     }
 
-    /// The built grid as its parts (`None` when it is not active): what the firmware's build
-    /// writes into flash (`scene::ahead`), and what [`Grid::cell`] reads.
+    /// The built grid as its parts (`None` when it is not active): what [`crate::bake`] writes
+    /// into flash, and what [`Grid::cell`] reads.
     #[inline]
-    pub fn ahead(&self) -> Option<GridAhead<'_, N, C::Index>> {
+    pub fn parts(&self) -> Option<GridParts<'_, N, C::Index>> {
         let CellSize { width, height } = self.cells?;
         let cells = usize::from(self.side) * usize::from(self.side);
         let starts = self.starts.slots().get(..=cells)?;
         let entries = starts.last()?.get();
-        Some(GridAhead { width, height, side: self.side, starts, pool: self.pool.slots().get(..entries)?, depth: self.depth.slots().get(..entries)? })
+        Some(GridParts { width, height, side: self.side, starts, pool: self.pool.slots().get(..entries)?, depth: self.depth.slots().get(..entries)? })
+    }
+
+    /// Holds a grid baked for the view the scene is prepared for (`None`: no grid), read
+    /// through the `Config`'s storage from now on: inactive when the storage cannot hold it.
+    pub fn hold(&mut self, parts: Option<GridParts<'static, N, C::Index>>) {
+        self.cells = None;
+        let Some(parts) = parts else { return };
+        let whole = self.starts.hold(parts.starts) == parts.starts.len() && self.pool.hold(parts.pool) == parts.pool.len() && self.depth.hold(parts.depth) == parts.depth.len();
+        if whole {
+            self.side = parts.side;
+            self.cells = Some(CellSize { width: parts.width, height: parts.height });
+        }
     }
 
     /// Total entries over all cells.
@@ -395,10 +400,10 @@ impl<N: Number, C: Config<Number = N>> Grid<C> {
     }
 }
 
-/// A built grid by its parts, borrowed: the firmware's made at build time for its fixed view
-/// and kept in flash (`Config::GRID_AHEAD`), or a [`Grid`]'s own.
+/// A built grid by its parts, borrowed: a [`Grid`]'s own, or a baked scene's, made at build
+/// time for its fixed view and kept in flash.
 #[derive(Clone, Copy, Debug)]
-pub struct GridAhead<'a, N, I> {
+pub struct GridParts<'a, N, I> {
     /// A cell's pixels across and down.
     pub width: NonZeroU16,
     pub height: NonZeroU16,
@@ -411,7 +416,7 @@ pub struct GridAhead<'a, N, I> {
     pub depth: &'a [N],
 }
 
-impl<'a, N, I: Index> GridAhead<'a, N, I> {
+impl<'a, N, I: Index> GridParts<'a, N, I> {
     /// [`Grid::cell`]: the entries of the cell holding image pixel (column, row), and the
     /// pixel's offsets from the cell's corner (saturated at 255).
     #[inline]

@@ -11,7 +11,6 @@ mod build_options;
 
 pub mod bounding_sphere;
 pub mod bounding_volume;
-#[cfg(feature = "acceleration-tables")]
 pub mod bvh;
 #[cfg(feature = "acceleration-tables")]
 pub mod early_split;
@@ -26,8 +25,8 @@ pub mod solid_extents;
 pub mod space_grid;
 pub mod sortlist;
 
-pub use acceleration::{window_corners, Acceleration, ObjectBounds, Tuning, ViewAhead};
+pub use acceleration::{window_corners, Acceleration, AccelerationParts, ObjectBounds, Tuning};
 #[cfg(feature = "acceleration-tables")]
-pub use acceleration::{hierarchy_ahead, hierarchy_references, HierarchyScratch, HIERARCHY_AHEAD_ABOVE};
+pub use acceleration::{baked_hierarchy, hierarchy_references, HierarchyScratch, BAKED_HIERARCHY_ABOVE};
 pub use acceleration::HIERARCHY_ABOVE;
 pub use build_options::{SILHOUETTES, TABLES};

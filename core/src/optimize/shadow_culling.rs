@@ -32,6 +32,10 @@ pub struct ShadowBound<N> {
     pub reach: N,
 }
 
+impl<N: Number> crate::storage::Unset for ShadowBound<N> {
+    const UNSET: Self = Self::UNSET;
+}
+
 impl<N: Number> ShadowBound<N> {
     /// Every byte zero: the value before the acceleration is built.
     pub const UNSET: Self = Self {
@@ -411,14 +415,18 @@ impl BlockerSet {
     }
 }
 
-/// One light's shadow tables made ahead (the firmware's, at build time, in flash): for a point
-/// light each object's cone of directions from it (none for a direction), and each object's
-/// blockers among the first 128 (none with a hierarchy) — the tables a render would build
-/// (`render/shadow_tables.rs`), bit for bit.
+/// One light's shadow tables by their parts: for a point light each object's cone of directions
+/// from it (none for a direction), and each object's blockers among the first 128 (none with a
+/// hierarchy) — the tables a render builds (`render/shadow_tables.rs`), or a baked scene's,
+/// made at build time for its fixed view and light, bit for bit (`Config::ShadowTables`).
 #[derive(Clone, Copy, Debug)]
-pub struct ShadowTablesAhead<'a, N> {
+pub struct ShadowTables<'a, N> {
     pub light_cones: &'a [DirectionChord<N>],
     pub blockers: &'a [BlockerSet],
+}
+
+impl<N> crate::storage::Unset for ShadowTables<'_, N> {
+    const UNSET: Self = Self { light_cones: &[], blockers: &[] };
 }
 
 /// Which objects may shadow which: `blockers[r]` gets `b` (for `b` < 128) when a shadow

@@ -15,9 +15,8 @@
 //! on the objects, and costs a division per object and axis).
 
 use crate::geometry::{Ray, Vector3};
-use crate::config::{Arrays, Config, SPACE_ENTRIES_PER_OBJECT};
-use crate::storage::{Index, Table};
-use crate::model::Objects;
+use crate::config::{Config, SPACE_ENTRIES_PER_OBJECT};
+use crate::storage::{Index, Table, Unset};
 use crate::number::Number;
 use crate::optimize::bounding_sphere::BoundingSphere;
 use crate::optimize::shadow_culling::BlockerSet;
@@ -56,17 +55,13 @@ impl<C: Config> Clone for SpaceGrid<C> {
     }
 }
 
-impl<N: Number + 'static, const K: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize, const AHEAD: u8, const VIEW: usize> SpaceGrid<Arrays<N, K, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS, AHEAD, VIEW>>
-where
-    S: crate::config::SolidStorage<N> + 'static,
-    P: crate::config::PaletteStorage + 'static,
-{
+impl<C: Config> SpaceGrid<C> {
     pub const NONE: Self = Self {
         resolution: 0,
-        low: Vector3 { x: N::ZEROED, y: N::ZEROED, z: N::ZEROED },
-        cell: Vector3 { x: N::ZEROED, y: N::ZEROED, z: N::ZEROED },
-        starts: [0; CELLS + 1],
-        entries: [[0; ENTRIES_PER_OBJECT]; K],
+        low: Unset::UNSET,
+        cell: Unset::UNSET,
+        starts: Unset::UNSET,
+        entries: Unset::UNSET,
         large: BlockerSet::EMPTY,
         large_beyond: false,
     };

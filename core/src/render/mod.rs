@@ -26,7 +26,7 @@ pub use intersect::NearestHit;
 pub use primary::{nearest_hit, nearest_hit_cached};
 pub use order::{render, Order, Pass, Pga, PixelMode, Progressive, Rgb, Rows, Streamed, Whole};
 pub use progressive::{traced_in_pass, PassStatistics, PASSES, PASS_SIZES};
-pub use shadow_tables::tables_ahead as shadow_tables_ahead;
+pub use shadow_tables::built_shadow_tables;
 pub use shadow_ray::{in_shadow, in_shadow_cached, in_shadow_culled, shadow_origin, BlockersBeyond, ShadowCache, ShadowCulling};
 pub use statistics::Statistics;
 pub use fill::{fill_volumes, fill_volumes_rows};

@@ -7,7 +7,7 @@ use crate::model::MAX_LIGHTS;
 use crate::number::Number;
 #[cfg(feature = "acceleration-tables")]
 use crate::optimize::shadow_culling::{blocker_table, sweep, BlockerSet, DirectionChord, LightPosition, LightReach};
-use crate::optimize::shadow_culling::ShadowTablesAhead;
+use crate::optimize::shadow_culling::ShadowTables;
 #[cfg(feature = "acceleration-tables")]
 use super::shadow_ray::BlockersBeyond;
 #[cfg(feature = "acceleration-tables")]
@@ -39,10 +39,10 @@ pub(crate) fn with_shadow_culling<N: Number, R, C: Config<Number = N>>(
         // 5 ms on the SPD tree (two threads were slower than one: 287 against 234 ms).
         return body(&[ShadowCulling::NONE]);
     }
-    if C::SHADOW_TABLES_AHEAD {
-        // Made ahead for this view and these lights (the firmware's, in flash): nothing is
-        // built, and the building code is not linked.
-        return with_tables_ahead(scene, body);
+    if <C::ShadowTables as Table<_>>::BAKED {
+        // Baked for this view and these lights (in flash): nothing is built, and the building
+        // code is not linked.
+        return with_baked_tables(scene, body);
     }
     let objects = scene.objects.len();
     let mut light_cones = C::PerObject::<DirectionChord<N>>::filled(objects, DirectionChord::ALWAYS);
@@ -56,11 +56,11 @@ pub(crate) fn with_shadow_culling<N: Number, R, C: Config<Number = N>>(
     body(&[first])
 }
 
-/// The culling of each light from its tables made ahead (`Config::SHADOW_TABLES_AHEAD`); a light
-/// without one culls nothing (every object a candidate: the same picture, more tests).
+/// The culling of each light from its baked tables (`Config::ShadowTables`); a light without
+/// one culls nothing (every object a candidate: the same picture, more tests).
 #[cfg(feature = "acceleration-tables")]
-fn with_tables_ahead<N: Number, R, C: Config<Number = N>>(scene: &Prepared<C>, body: impl FnOnce(&[ShadowCulling<'_, N, C::Index>]) -> R) -> R {
-    let tables = scene.acceleration.shadow_tables_ahead();
+fn with_baked_tables<N: Number, R, C: Config<Number = N>>(scene: &Prepared<C>, body: impl FnOnce(&[ShadowCulling<'_, N, C::Index>]) -> R) -> R {
+    let tables = scene.acceleration.shadow_tables();
     let mut culling = [ShadowCulling::NONE; MAX_LIGHTS];
     for (slot, table) in culling.iter_mut().zip(tables) {
         *slot = ShadowCulling { light_cones: table.light_cones, blockers: table.blockers, beyond: BlockersBeyond::NONE };
@@ -69,15 +69,14 @@ fn with_tables_ahead<N: Number, R, C: Config<Number = N>>(scene: &Prepared<C>, b
 }
 
 /// The lights' shadow tables as a render of `scene` builds them (`with_shadow_culling`), for
-/// `body` to write ahead (the firmware's build script: `scene::ahead::write_prepared_ahead`);
-/// none (an empty slice) where the render builds none. The lists beyond the 128th object
-/// (`Config::BLOCKER_LISTS`, a host's) are not among them.
+/// `body` to bake ([`crate::bake`]); none (an empty slice) where the render builds none. The
+/// lists beyond the 128th object (`Config::BLOCKER_LISTS`, a host's) are not among them.
 #[cfg(feature = "acceleration-tables")]
-pub fn tables_ahead<N: Number, R, C: Config<Number = N>>(scene: &Prepared<C>, body: impl FnOnce(&[ShadowTablesAhead<'_, N>]) -> R) -> R {
+pub fn built_shadow_tables<N: Number, R, C: Config<Number = N>>(scene: &Prepared<C>, body: impl FnOnce(&[ShadowTables<'_, N>]) -> R) -> R {
     with_shadow_culling(scene, |culling| {
-        let mut tables = [ShadowTablesAhead { light_cones: &[], blockers: &[] }; MAX_LIGHTS];
+        let mut tables = [ShadowTables { light_cones: &[], blockers: &[] }; MAX_LIGHTS];
         for (table, light) in tables.iter_mut().zip(culling) {
-            *table = ShadowTablesAhead { light_cones: light.light_cones, blockers: light.blockers };
+            *table = ShadowTables { light_cones: light.light_cones, blockers: light.blockers };
         }
         let built = culling.iter().any(|light| !light.light_cones.is_empty() || !light.blockers.is_empty());
         body(if built { tables.get(..culling.len()).unwrap_or(&[]) } else { &[] })
@@ -85,7 +84,7 @@ pub fn tables_ahead<N: Number, R, C: Config<Number = N>>(scene: &Prepared<C>, bo
 }
 
 #[cfg(not(feature = "acceleration-tables"))]
-pub fn tables_ahead<N: Number, R, C: Config<Number = N>>(_scene: &Prepared<C>, body: impl FnOnce(&[ShadowTablesAhead<'_, N>]) -> R) -> R {
+pub fn built_shadow_tables<N: Number, R, C: Config<Number = N>>(_scene: &Prepared<C>, body: impl FnOnce(&[ShadowTables<'_, N>]) -> R) -> R {
     body(&[])
 }
 

@@ -1,7 +1,6 @@
 //! Scenes: the description a `.mts` file parses into ([`SceneDescription`], plain `f64`, no
 //! number type yet) and the render-ready [`Scene`] prepared from it in a chosen number type.
 
-pub mod ahead;
 mod prepared;
 mod range;
 

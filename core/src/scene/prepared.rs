@@ -7,12 +7,11 @@
 
 use core::ops::Deref;
 
-use crate::model::{Object, Objects, PreparedMaterial};
-use heapless::Vec;
+use crate::model::{Object, PreparedMaterial};
 
 use crate::camera::Camera;
-use crate::config::{Arrays, Config, OwnedPalette, PaletteStorage};
-use crate::storage::{List, Table};
+use crate::config::{Arrays, Config, PaletteStorage};
+use crate::storage::{List, Table, Unset};
 use crate::geometry::{AffineTransform, Vector3};
 use crate::light::{PreparedLight, PreparedLightSource};
 use crate::number::Number;
@@ -81,7 +80,7 @@ pub struct Optics<N> {
 
 /// A scene prepared with the tables its build's [`Config`] gives it (arrays sized at compile
 /// time in [`Arrays`], the firmware's and the tests'; storage sized at run time on a host).
-pub type Scene<N, const MAX_OBJECTS: usize, O = Vec<Object<N>, MAX_OBJECTS>> = Prepared<Arrays<N, MAX_OBJECTS, O>>;
+pub type Scene<N, const MAX_OBJECTS: usize> = Prepared<Arrays<N, MAX_OBJECTS>>;
 
 /// The render-ready scene (see the module's comment), its tables the build's `C`.
 pub struct Prepared<C: Config> {
@@ -90,7 +89,7 @@ pub struct Prepared<C: Config> {
     /// same bits as transforming it per ray), indexed like `objects`: every primary ray starts
     /// there, so a ray–object test transforms only the direction. Zero for a parallel view.
     /// It depends on the view, so it is kept apart from the objects (which may be in flash);
-    /// made ahead with the view's other tables where they are (read through [`Prepared::eyes`]).
+    /// baked with the view's other tables where they are (read through [`Prepared::eyes`]).
     pub eyes: C::ViewTable<Vector3<C::Number>>,
     pub camera: Camera<C::Number>,
     /// The first light (the thesis's only one).
@@ -138,61 +137,38 @@ impl<C: Config> core::fmt::Debug for Prepared<C> {
     }
 }
 
-impl<N: Number + 'static, const MAX_OBJECTS: usize, O: Objects<N> + 'static, const POOL: usize, const DEPTH: usize, const ROW: usize, S, P, const OTHER_LIGHTS: usize, const AHEAD: u8, const VIEW: usize> Prepared<Arrays<N, MAX_OBJECTS, O, POOL, DEPTH, ROW, S, P, OTHER_LIGHTS, AHEAD, VIEW>>
-where
-    S: crate::config::SolidStorage<N> + 'static,
-    P: crate::config::PaletteStorage + 'static,
-{
-    /// Every byte zero but the objects' (`objects`; the firmware's, in flash, take none): the
-    /// value of a scene to be prepared in place. The firmware keeps its scene in a `static` of
-    /// this value (zero-initialised RAM, no flash) and prepares it there: a scene returned by
-    /// value would pass through the stack. `solids`: where its solids' nodes are (unused
-    /// without the `csg` feature); `palette`: where its look-up table is.
-    pub const fn unprepared(objects: O, solids: S, palette: P) -> Self {
-        #[cfg(not(feature = "csg"))]
-        core::mem::forget(solids);
-        Self {
-            objects,
-            eyes: [Vector3 { x: N::ZEROED, y: N::ZEROED, z: N::ZEROED }; VIEW],
-            camera: Camera::UNSET,
-            light: PreparedLight::Point(Vector3 { x: N::ZEROED, y: N::ZEROED, z: N::ZEROED }),
-            light_intensity: N::ZEROED,
-            more_lights: Vec::new(),
-            #[cfg(feature = "ray-tree")]
-            optics: Vec::new(),
-            #[cfg(feature = "ray-tree")]
-            transparent: false,
-            #[cfg(feature = "ray-tree")]
-            spheres: Vec::new(),
-            #[cfg(feature = "ray-tree")]
-            space_grid: SpaceGrid::NONE,
-            depth: 0,
-            antialias: None,
-            constants: ShadingConstants {
-                fifteen: N::ZEROED,
-                brightest: N::ZEROED,
-                half: N::ZEROED,
-                noise_step: N::ZEROED,
-                ambient: N::ZEROED,
-                full_rgb: N::ZEROED,
-                brightest_rgb: N::ZEROED,
-            },
-            background: 0,
-            shadows: false,
-            dither: false,
-            optimizations: Optimizations::NONE,
-            palette,
-            acceleration: Acceleration::UNSET,
-            #[cfg(feature = "csg")]
-            solid_nodes: solids,
-        }
-    }
-}
-
-impl<N: Number + 'static, const MAX_OBJECTS: usize, const POOL: usize, const DEPTH: usize, const ROW: usize> Prepared<Arrays<N, MAX_OBJECTS, Vec<Object<N>, MAX_OBJECTS>, POOL, DEPTH, ROW>> {
-    /// Every byte zero, no objects: the value of a scene to be prepared in place
-    /// ([`Scene::unprepared`] with no objects).
-    pub const UNPREPARED: Self = Self::unprepared(Vec::new(), Vec::new(), OwnedPalette::BLACK);
+impl<C: Config> Prepared<C> {
+    /// Every byte zero (a baked scene's objects, in flash, take none): the value of a scene to
+    /// be prepared in place. A board keeps its scene in a `static` of this value
+    /// (zero-initialised RAM, no flash) and prepares it there: a scene returned by value would
+    /// pass through the stack.
+    pub const UNPREPARED: Self = Self {
+        objects: Unset::UNSET,
+        eyes: Unset::UNSET,
+        camera: Camera::UNSET,
+        light: PreparedLight::Point(Vector3::UNSET),
+        light_intensity: Unset::UNSET,
+        more_lights: Unset::UNSET,
+        #[cfg(feature = "ray-tree")]
+        optics: Unset::UNSET,
+        #[cfg(feature = "ray-tree")]
+        transparent: false,
+        #[cfg(feature = "ray-tree")]
+        spheres: Unset::UNSET,
+        #[cfg(feature = "ray-tree")]
+        space_grid: SpaceGrid::NONE,
+        depth: 0,
+        antialias: None,
+        constants: ShadingConstants::UNSET,
+        background: 0,
+        shadows: false,
+        dither: false,
+        optimizations: Optimizations::NONE,
+        palette: Unset::UNSET,
+        acceleration: Acceleration::UNSET,
+        #[cfg(feature = "csg")]
+        solid_nodes: Unset::UNSET,
+    };
 }
 
 impl<N: Number, C: Config<Number = N>> Prepared<C> {
@@ -446,15 +422,10 @@ impl<N: Number, C: Config<Number = N>> Prepared<C> {
         }
     }
 
-    /// Each object's eye in its own space: placed here, or made ahead with the view's tables
-    /// (`Config::VIEW_AHEAD`, the firmware's in flash).
+    /// Each object's eye in its own space: placed here, or baked with the view's tables.
     #[inline]
     pub fn eyes(&self) -> &[Vector3<N>] {
-        if C::VIEW_AHEAD {
-            self.acceleration.eyes_ahead()
-        } else {
-            self.eyes.slots()
-        }
+        self.eyes.slots()
     }
 
     /// All lights with their intensities, the first first.

@@ -22,6 +22,9 @@ pub struct ShadingConstants<N> {
 }
 
 impl<N: Number> ShadingConstants<N> {
+    /// Every byte zero: the value before preparation.
+    pub const UNSET: Self = Self { fifteen: N::ZEROED, brightest: N::ZEROED, half: N::ZEROED, noise_step: N::ZEROED, ambient: N::ZEROED, full_rgb: N::ZEROED, brightest_rgb: N::ZEROED };
+
     pub fn new(ambient: f64) -> Self {
         Self {
             fifteen: N::from_i32(15),

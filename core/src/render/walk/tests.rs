@@ -167,7 +167,7 @@ fn streamed_equals_the_framebuffer_render_antialiased_and_with_the_ray_tree() {
 fn the_sized_variants_agree() {
     // The firmware's sizes: the polished snooker's tree is 4 deep; a row of 129 corners.
     for (name, text) in [("snooker-polished", SNOOKER_POLISHED), ("lattice-antialiased", LATTICE_ANTIALIASED), ("lattice", LATTICE)] {
-        let scene = Prepared::<Arrays<f32, CAPACITY, heapless::Vec<_, CAPACITY>, { crate::config::DEFAULT_GRID_ENTRIES_PER_OBJECT }, 4, 129>>::prepare(&description(text)).unwrap();
+        let scene = Prepared::<Arrays<f32, CAPACITY, { crate::config::DEFAULT_GRID_ENTRIES_PER_OBJECT }, 4, 129>>::prepare(&description(text)).unwrap();
         let mut pixels = vec![0u8; PIXELS];
         let mut frame = FrameBuffer::new(&mut pixels, WIDTH, HEIGHT).unwrap();
         let mut expected = Statistics::default();
