@@ -13,8 +13,8 @@ echo "== clippy, warnings denied (the host workspace, all targets; the core as t
 cargo clippy --quiet --workspace --all-targets -- -D warnings
 cargo clippy --quiet -p microtrace --no-default-features --features embedded-graphics,sphere -- -D warnings
 
-echo "== clippy on the real-board examples (thumbv6m-none-eabi, the Pico 2's thumbv8m.main-none-eabihf; their own workspaces)" >&2
-for example in firmware/examples/pico-ssd1306 firmware/examples/pico-st7789 firmware/examples/pico2-st7789; do
+echo "== clippy on the board examples (thumbv6m-none-eabi; the Pico 2's thumbv8m.main-none-eabihf; your-board, thumbv7em-none-eabihf; their own workspaces)" >&2
+for example in firmware/examples/pico-ssd1306 firmware/examples/pico-st7789 firmware/examples/pico2-st7789 firmware/examples/your-board; do
   (cd "$example" && cargo clippy --quiet --release -- -D warnings)
 done
 

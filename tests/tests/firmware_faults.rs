@@ -237,17 +237,18 @@ fn a_scene_too_large_for_the_mps2_an386_fails_at_build_time() {
 }
 
 /// A real scene whose statics leave too little stack (the RAM check's reserve set to 0): 512
-/// spheres with a framebuffer of 256x246 (64 KB of statics leave 1,424 bytes of stack; the
-/// render's peak is about 2.2 KB): the stack overflows, a frame jumping past the bottom of RAM
-/// at once (a guard of a few words would miss it), and the run says so. On the lm3s6965evb this
-/// is what used to hang until the timeout.
-fn a_scene_that_overflows_its_stack_says_so(board: Board, objects: usize) {
+/// spheres with a framebuffer of 256 x `rows` (64 KB of statics leave 1 to 2 KB of stack; the
+/// render's peak is about 2 KB in the Cortex-M4F's `f32`, 2.4 KB in the M3's software `f32`):
+/// the stack overflows, a frame jumping past the bottom of RAM at once (a guard of a few words
+/// would miss it), and the run says so. On the lm3s6965evb this is what used to hang until the
+/// timeout.
+fn a_scene_that_overflows_its_stack_says_so(board: Board, objects: usize, rows: u16) {
     let scene = many_spheres(objects);
     let out = work_dir(&format!("{}-overflowing-{objects}", board.name()));
     let mut options = FirmwareOptions::new(&scene, board, "f32", &out);
     options.stack_reserve = Some(0);
     options.framebuffer = true;
-    options.size = (256, 246);
+    options.size = (256, rows);
     options.timeout = Duration::from_secs(60);
     let error = firmware::run(&options).unwrap_err();
     let context = format!("{} with {objects} spheres: {error}", board.name());
@@ -267,27 +268,32 @@ fn a_scene_that_overflows_its_stack_on_lm3s6965evb_says_so() {
     // 512, the build's capacity, since the objects stay in flash (149 before, 119 before the
     // framebuffer and the OLED copy left the RAM; with a framebuffer again since the shadow
     // tables left the stack).
-    a_scene_that_overflows_its_stack_says_so(Board::Lm3s6965evb, FIRMWARE_SCENE_CAPACITY);
+    a_scene_that_overflows_its_stack_says_so(Board::Lm3s6965evb, FIRMWARE_SCENE_CAPACITY, 246);
 }
 
 #[test]
 fn a_scene_that_overflows_its_stack_on_mps2_an386_says_so() {
-    // The same statics as on the lm3s6965evb (the same framebuffer, no display copy; 129
-    // spheres before, when the lm3s6965evb's OLED copy took 4 KB more there).
-    a_scene_that_overflows_its_stack_says_so(Board::Mps2An386, FIRMWARE_SCENE_CAPACITY);
+    // Three rows more than on the lm3s6965evb: its render's peak stack is smaller (the FPU's
+    // `f32`; 129 spheres before, when the lm3s6965evb's OLED copy took 4 KB more there; 246 rows
+    // before the baked scene's statics fell from 1,128 bytes to about 330).
+    a_scene_that_overflows_its_stack_says_so(Board::Mps2An386, FIRMWARE_SCENE_CAPACITY, 249);
 }
 
-/// One object more than the build's capacity: the build sizes the scene instead of preparing
-/// it (firmware/build.rs's `size_only`) and stops at the RAM check with the bytes the scene
-/// would need for its 513 objects, through xtask and through the build script alone.
+/// One object more than the build's capacity: the build sizes the scene instead of baking it
+/// (firmware/build.rs's `size_only`, `microtrace::bake::bake_sizes`) and stops at the RAM check
+/// with the bytes the scene would need for its 513 objects (with a framebuffer of 256x246, more
+/// than the board has: a baked scene of 513 spheres alone would fit), through xtask and through
+/// the build script alone.
 #[test]
 fn a_scene_over_the_build_capacity_is_sized_and_says_what_it_needs() {
     let count = FIRMWARE_SCENE_CAPACITY + 1;
     let scene = many_spheres(count);
     let expected = format!("{}: needs ", scene.display());
     let sized = " bytes of RAM (the prepared scene ";
-    let objects = format!(" for {count} objects in f32, framebuffer 0 for 128x64, stack reserve ");
-    let options = FirmwareOptions::new(&scene, Board::Lm3s6965evb, "f32", work_dir("over-capacity"));
+    let objects = format!(" for {count} objects in f32, framebuffer 62,976 for 256x246, stack reserve ");
+    let mut options = FirmwareOptions::new(&scene, Board::Lm3s6965evb, "f32", work_dir("over-capacity"));
+    options.framebuffer = true;
+    options.size = (256, 246);
     for error in [firmware::run(&options).unwrap_err(), firmware::build_with_primitives(&options, &["sphere"]).unwrap_err()] {
         println!("{error}");
         assert!(error.contains(&expected) && error.contains(sized) && error.contains(&objects) && error.contains("the lm3s6965evb has 65,536"), "{error}");

@@ -17,12 +17,23 @@ use xtask::uf2;
 fn build_and_check(example: &Example, symbols: &[&str]) -> ImageReport {
     let elf = example::build(example).unwrap_or_else(|error| panic!("{error}"));
     let bytes = std::fs::read(&elf).unwrap_or_else(|error| panic!("{}: {error}", elf.display()));
-    // 16 KB of code at least: the parser, the scene preparation, the tracer, the driver.
+    // 16 KB of code at least: the tracer, the HAL, the display's driver.
     let report = example::check_image(&bytes, example.chip, 16 * 1024, symbols)
         .unwrap_or_else(|problems| panic!("{}:\n  {}", elf.display(), problems.join("\n  ")));
+    scene_is_baked(example, &bytes);
     eprintln!("{}: {report:?}", example.folder);
     uf2_holds_the_image(example, &elf, &bytes);
     report
+}
+
+/// The scene is baked (build.rs, `microtrace::bake`): its objects are in flash and the chip links
+/// neither the parser nor the preparation from a description.
+fn scene_is_baked(example: &Example, elf: &[u8]) {
+    let (symbols, _) = xtask::elf::flash_symbols(elf).unwrap();
+    assert!(symbols.iter().any(|symbol| symbol.demangled.ends_with("::scene::OBJECTS")), "{}: no baked objects in flash", example.folder);
+    for code in ["microtrace::parser::", "prepare_in_place", "prepare_objects"] {
+        assert!(!symbols.iter().any(|symbol| symbol.demangled.contains(code)), "{}: `{code}` is linked", example.folder);
+    }
 }
 
 /// The UF2 file beside the ELF (what a user drags onto the Pico in BOOTSEL mode): every block
@@ -63,7 +74,7 @@ fn render_is_real(report: &ImageReport, render: &str) {
 #[test]
 fn the_pico_ssd1306_image_is_complete() {
     let render = "microtrace_pico_ssd1306::render";
-    let report = build_and_check(&example::PICO_SSD1306, &[render, "microtrace::render::", "microtrace::shapes::sphere::", "microtrace::parser::"]);
+    let report = build_and_check(&example::PICO_SSD1306, &[render, "microtrace::render::", "microtrace::shapes::sphere::""]);
     render_is_real(&report, render);
     // The 8 KB framebuffer (128 x 64 palette indices) is in RAM.
     assert!(report.static_ram_bytes >= 128 * 64, "{} bytes of static RAM", report.static_ram_bytes);
@@ -72,7 +83,7 @@ fn the_pico_ssd1306_image_is_complete() {
 #[test]
 fn the_pico_st7789_image_is_complete() {
     let render = "microtrace_pico_st7789::render";
-    let report = build_and_check(&example::PICO_ST7789, &[render, "microtrace::render::", "microtrace::shapes::sphere::", "microtrace::parser::"]);
+    let report = build_and_check(&example::PICO_ST7789, &[render, "microtrace::render::", "microtrace::shapes::sphere::""]);
     render_is_real(&report, render);
     // The 56 KB framebuffer (240 x 240 palette indices) is in RAM.
     assert!(report.static_ram_bytes >= 240 * 240, "{} bytes of static RAM", report.static_ram_bytes);
@@ -82,7 +93,7 @@ fn the_pico_st7789_image_is_complete() {
 fn the_pico2_st7789_image_is_complete() {
     let render = "microtrace_pico2_st7789::render";
     // (The sphere's intersection is inlined into the render here: no function of its own.)
-    let report = build_and_check(&example::PICO2_ST7789, &[render, "microtrace::render::", "microtrace::parser::"]);
+    let report = build_and_check(&example::PICO2_ST7789, &[render, "microtrace::render::""]);
     render_is_real(&report, render);
     assert!(report.static_ram_bytes >= 240 * 240, "{} bytes of static RAM", report.static_ram_bytes);
     // The vector table at the flash's start, the IMAGE_DEF after it (check_image); and `f32` in

@@ -208,9 +208,10 @@ fn write_figures(figures: &Figures, number_type: &str, kind: NumberKind, out: &m
     let Figures { width, height, objects, other_lights, .. } = *figures;
     writeln!(out, "// Baked by microtrace::bake {}: do not edit.", env!("CARGO_PKG_VERSION"))?;
     writeln!(out, "/// The number type the tracer computes in.\npub type Number = {number_type};")?;
-    writeln!(out, "/// Its name (`microtrace render --number`).\npub const NUMBER_NAME: &str = {:?};", kind.name())?;
-    writeln!(out, "pub const WIDTH: u16 = {width};\npub const HEIGHT: u16 = {height};\npub const PIXEL_COUNT: usize = {};", usize::from(width) * usize::from(height))?;
-    writeln!(out, "pub const OBJECT_COUNT: usize = {objects};\n/// The lights after the first.\npub const OTHER_LIGHTS: usize = {other_lights};")
+    // The figures are there to be read; a board reads those it needs.
+    writeln!(out, "/// Its name (`microtrace render --number`).\n#[allow(dead_code)]\npub const NUMBER_NAME: &str = {:?};", kind.name())?;
+    writeln!(out, "#[allow(dead_code)]\npub const WIDTH: u16 = {width};\n#[allow(dead_code)]\npub const HEIGHT: u16 = {height};\n#[allow(dead_code)]\npub const PIXEL_COUNT: usize = {};", usize::from(width) * usize::from(height))?;
+    writeln!(out, "#[allow(dead_code)]\npub const OBJECT_COUNT: usize = {objects};\n/// The lights after the first.\n#[allow(dead_code)]\npub const OTHER_LIGHTS: usize = {other_lights};")
 }
 
 /// The file [`bake`] would write for `description`, with every table empty: the scene's

@@ -20,4 +20,29 @@ fn main() {
     println!("cargo:rustc-link-arg-bins=--nmagic");
     println!("cargo:rustc-link-arg-bins=-Tlink.x");
     println!("cargo:rustc-link-arg-bins=-Tdefmt.x");
+    bake(&out);
+}
+
+/// Bakes the thesis's snooker scene for the display into `OUT_DIR/scene.rs` (`microtrace::bake`):
+/// the chip parses and prepares nothing.
+fn bake(out: &std::path::Path) {
+    let scene = "../../../scenes/snooker.mts";
+    println!("cargo:rerun-if-changed={scene}");
+    let description = match std::fs::read(scene).map_err(|error| error.to_string()).and_then(|text| microtrace::parser::parse::<64>(&text).map_err(|error| format!("{error}"))) {
+        Ok(description) => description,
+        Err(error) => fail(&format!("{scene}: {error}")),
+    };
+    match microtrace::bake::bake(&description, &microtrace::bake::Bake::new(128, 64, microtrace::number::NumberKind::F32)) {
+        Ok(baked) => {
+            if let Err(error) = std::fs::write(out.join("scene.rs"), baked) {
+                fail(&format!("cannot write scene.rs: {error}"));
+            }
+        }
+        Err(error) => fail(&format!("{scene}: {error}")),
+    }
+}
+
+fn fail(message: &str) -> ! {
+    println!("cargo:warning={message}");
+    std::process::exit(1);
 }

@@ -1,6 +1,6 @@
 //! MicroTrace on a real board: a Raspberry Pi Pico (RP2040, Cortex-M0+, no FPU) with an
-//! SSD1306 128x64 monochrome OLED on I2C0 (GP4 = SDA, GP5 = SCL, address 0x3C). It parses the
-//! thesis's snooker scene on the device, fits it to the display, renders it in `f32` and shows
+//! SSD1306 128x64 monochrome OLED on I2C0 (GP4 = SDA, GP5 = SCL, address 0x3C). It renders the
+//! thesis's snooker scene, baked at build time for the display (build.rs, `microtrace::bake`), renders it in `f32` and shows
 //! each finished band of 8 rows (one SSD1306 page) in black and white by the core's adapters:
 //! each look-up-table entry's luma through a tone curve, error-diffused (Floyd–Steinberg,
 //! `ErrorDiffusion`, one row of errors in RAM); with the feature `ordered-dither`, the palette's
@@ -16,8 +16,7 @@ use microtrace::pixel::{FrameBuffer, PixelSink, PixelSource, RowDisplaySink};
 #[cfg(feature = "ordered-dither")]
 use microtrace::pixel::{LutGrey, OrderedDither};
 use microtrace::render::{Pga, Statistics, Whole};
-use microtrace::model::SceneDescription;
-use microtrace::scene::Scene;
+use microtrace::scene::Prepared;
 use panic_probe as _;
 use rp_pico::entry;
 use rp_pico::hal::{self, pac, Clock};
@@ -25,12 +24,12 @@ use ssd1306::mode::DisplayConfig;
 use ssd1306::prelude::{DisplayRotation, DisplaySize128x64};
 use ssd1306::{I2CDisplayInterface, Ssd1306};
 
-/// The scene, parsed on the device with the same parser as the host.
-const SCENE_TEXT: &[u8] = include_bytes!("../../../../scenes/snooker.mts");
-/// Snooker has 21 balls and a table.
-const MAX_OBJECTS: usize = 24;
-const WIDTH: u16 = 128;
-const HEIGHT: u16 = 64;
+/// The scene, baked by build.rs (`microtrace::bake`): its tables in flash, prepared in place.
+mod scene {
+    include!(concat!(env!("OUT_DIR"), "/scene.rs"));
+}
+const WIDTH: u16 = scene::WIDTH;
+const HEIGHT: u16 = scene::HEIGHT;
 
 /// Stops here with a message on the defmt log (no panic machinery for expected failures).
 fn halt(message: &str) -> ! {
@@ -68,26 +67,22 @@ fn main() -> ! {
         halt("the SSD1306 does not answer at 0x3C (wiring?)");
     }
 
-    let description: SceneDescription<MAX_OBJECTS> = match microtrace::parser::parse(SCENE_TEXT) {
-        Ok(mut description) => {
-            description.fit_to_size(WIDTH, HEIGHT);
-            description
-        }
-        Err(_) => halt("the scene does not parse"),
-    };
-    let Ok(scene) = Scene::<f32, MAX_OBJECTS>::prepare(&description) else { halt("the scene does not prepare") };
+    let Some(prepared) = cortex_m::singleton!(: Prepared<scene::SceneConfig> = Prepared::UNPREPARED) else { halt("the scene already taken") };
+    if prepared.prepare_baked(&scene::SCENE).is_err() {
+        halt("the scene does not prepare");
+    }
 
     let Some(pixels) = cortex_m::singleton!(: [u8; WIDTH as usize * HEIGHT as usize] = [0; WIDTH as usize * HEIGHT as usize]) else {
         halt("framebuffer already taken")
     };
     let Some(frame) = FrameBuffer::new(pixels, WIDTH, HEIGHT) else { halt("framebuffer too small") };
-    let mut sink = Pages(RowDisplaySink::new(frame, dots(display), greys(&scene.palette)));
+    let mut sink = Pages(RowDisplaySink::new(frame, dots(display), greys(&prepared.palette)));
     let mut statistics = Statistics::default();
     defmt::info!("rendering {=u16}x{=u16}", WIDTH, HEIGHT);
     // The RP2040's 1 MHz timer times the render (what README.md's estimate is checked against).
     let timer = hal::Timer::new(pac.TIMER, &mut pac.RESETS, &clocks);
     let started = timer.get_counter();
-    render(&scene, &mut sink, &mut statistics);
+    render(prepared, &mut sink, &mut statistics);
     let elapsed = timer.get_counter() - started;
     defmt::info!("rendered in {=u64} ms", elapsed.to_millis());
     defmt::info!("rays {=u64}, failed rows {=u16}", statistics.rays_traced, sink.0.failed_rows);
@@ -98,7 +93,7 @@ fn main() -> ! {
 
 /// The render, out of line (one symbol for the tests to find in the ELF).
 #[inline(never)]
-fn render<S: PixelSink<u8> + PixelSource<u8>>(scene: &Scene<f32, MAX_OBJECTS>, sink: &mut S, statistics: &mut Statistics) {
+fn render<S: PixelSink<u8> + PixelSource<u8>>(scene: &Prepared<scene::SceneConfig>, sink: &mut S, statistics: &mut Statistics) {
     microtrace::render::render(scene, Pga, Whole, sink, statistics);
 }
 

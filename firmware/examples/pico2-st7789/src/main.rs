@@ -15,10 +15,9 @@ use embedded_graphics::prelude::*;
 use embedded_hal::digital::OutputPin;
 use embedded_hal_bus::spi::ExclusiveDevice;
 use fugit::RateExtU32;
-use microtrace::model::SceneDescription;
 use microtrace::pixel::{FrameBuffer, LutColour, PixelSink, PixelSource, RowDisplaySink};
 use microtrace::render::{Pga, Statistics, Whole};
-use microtrace::scene::Scene;
+use microtrace::scene::Prepared;
 use mipidsi::interface::SpiInterface;
 use mipidsi::models::ST7789;
 use mipidsi::options::ColorInversion;
@@ -36,14 +35,12 @@ pub static IMAGE_DEF: hal::block::ImageDef = hal::block::ImageDef::secure_exe();
 
 /// The Pico 2's crystal.
 const XOSC_CRYSTAL_FREQ: u32 = 12_000_000;
-/// The scene, parsed on the device with the same parser as the host.
-const SCENE_TEXT: &[u8] = include_bytes!("../../../../scenes/snooker.mts");
-/// Snooker has 21 balls and a table.
-const MAX_OBJECTS: usize = 24;
-/// `f32` with the FPU's square root: the host's `f32` bit for bit (both correctly rounded).
-type Number = microtrace::number::F32With<microtrace_fpu_sqrt::VsqrtF32>;
-const WIDTH: u16 = 240;
-const HEIGHT: u16 = 240;
+/// The scene, baked by build.rs (`microtrace::bake`): its tables in flash, prepared in place.
+mod scene {
+    include!(concat!(env!("OUT_DIR"), "/scene.rs"));
+}
+const WIDTH: u16 = scene::WIDTH;
+const HEIGHT: u16 = scene::HEIGHT;
 
 /// Stops here with a message on the defmt log (no panic machinery for expected failures).
 fn halt(message: &str) -> ! {
@@ -103,25 +100,21 @@ fn main() -> ! {
     let _ = display.clear(Rgb565::BLACK);
     let _ = backlight.set_high();
 
-    let description: SceneDescription<MAX_OBJECTS> = match microtrace::parser::parse(SCENE_TEXT) {
-        Ok(mut description) => {
-            description.fit_to_size(WIDTH, HEIGHT);
-            description
-        }
-        Err(_) => halt("the scene does not parse"),
-    };
-    let Ok(scene) = Scene::<Number, MAX_OBJECTS>::prepare(&description) else { halt("the scene does not prepare") };
+    let Some(prepared) = cortex_m::singleton!(: Prepared<scene::SceneConfig> = Prepared::UNPREPARED) else { halt("the scene already taken") };
+    if prepared.prepare_baked(&scene::SCENE).is_err() {
+        halt("the scene does not prepare");
+    }
 
     let Some(pixels) = cortex_m::singleton!(: [u8; WIDTH as usize * HEIGHT as usize] = [0; WIDTH as usize * HEIGHT as usize]) else {
         halt("framebuffer already taken")
     };
     let Some(frame) = FrameBuffer::new(pixels, WIDTH, HEIGHT) else { halt("framebuffer too small") };
-    let mut sink = RowDisplaySink::new(frame, display, LutColour::<Rgb565>::new(&scene.palette));
+    let mut sink = RowDisplaySink::new(frame, display, LutColour::<Rgb565>::new(&prepared.palette));
     let mut statistics = Statistics::default();
     defmt::info!("rendering {=u16}x{=u16}", WIDTH, HEIGHT);
     // The RP2350's 1 MHz timer times the render (what README.md's estimate is checked against).
     let started = timer.get_counter();
-    render(&scene, &mut sink, &mut statistics);
+    render(prepared, &mut sink, &mut statistics);
     let elapsed = timer.get_counter() - started;
     defmt::info!("rendered in {=u64} ms; rays {=u64}, failed rows {=u16}", elapsed.to_millis(), statistics.rays_traced, sink.failed_rows);
     loop {
@@ -131,6 +124,6 @@ fn main() -> ! {
 
 /// The render, out of line (one symbol for the tests to find in the ELF).
 #[inline(never)]
-fn render<S: PixelSink<u8> + PixelSource<u8>>(scene: &Scene<Number, MAX_OBJECTS>, sink: &mut S, statistics: &mut Statistics) {
+fn render<S: PixelSink<u8> + PixelSource<u8>>(scene: &Prepared<scene::SceneConfig>, sink: &mut S, statistics: &mut Statistics) {
     microtrace::render::render(scene, Pga, Whole, sink, statistics);
 }
