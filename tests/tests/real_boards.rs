@@ -74,7 +74,7 @@ fn render_is_real(report: &ImageReport, render: &str) {
 #[test]
 fn the_pico_ssd1306_image_is_complete() {
     let render = "microtrace_pico_ssd1306::render";
-    let report = build_and_check(&example::PICO_SSD1306, &[render, "microtrace::render::", "microtrace::shapes::sphere::""]);
+    let report = build_and_check(&example::PICO_SSD1306, &[render, "microtrace::render::", "microtrace::shapes::sphere::"]);
     render_is_real(&report, render);
     // The 8 KB framebuffer (128 x 64 palette indices) is in RAM.
     assert!(report.static_ram_bytes >= 128 * 64, "{} bytes of static RAM", report.static_ram_bytes);
@@ -83,7 +83,7 @@ fn the_pico_ssd1306_image_is_complete() {
 #[test]
 fn the_pico_st7789_image_is_complete() {
     let render = "microtrace_pico_st7789::render";
-    let report = build_and_check(&example::PICO_ST7789, &[render, "microtrace::render::", "microtrace::shapes::sphere::""]);
+    let report = build_and_check(&example::PICO_ST7789, &[render, "microtrace::render::", "microtrace::shapes::sphere::"]);
     render_is_real(&report, render);
     // The 56 KB framebuffer (240 x 240 palette indices) is in RAM.
     assert!(report.static_ram_bytes >= 240 * 240, "{} bytes of static RAM", report.static_ram_bytes);
@@ -93,7 +93,7 @@ fn the_pico_st7789_image_is_complete() {
 fn the_pico2_st7789_image_is_complete() {
     let render = "microtrace_pico2_st7789::render";
     // (The sphere's intersection is inlined into the render here: no function of its own.)
-    let report = build_and_check(&example::PICO2_ST7789, &[render, "microtrace::render::""]);
+    let report = build_and_check(&example::PICO2_ST7789, &[render, "microtrace::render::"]);
     render_is_real(&report, render);
     assert!(report.static_ram_bytes >= 240 * 240, "{} bytes of static RAM", report.static_ram_bytes);
     // The vector table at the flash's start, the IMAGE_DEF after it (check_image); and `f32` in
