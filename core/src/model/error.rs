@@ -70,11 +70,13 @@ impl SceneError {
 
 /// Why a scene was rejected.
 #[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
 pub enum SceneErrorKind {
     /// The statement part of the line (before any `#`) is not valid UTF-8.
     InvalidUtf8,
-    /// The first word of a statement is not a keyword of the format.
-    UnknownKeyword { keyword: Token },
+    /// The first word of a statement is not a keyword of the format; `suggestion`, the keyword
+    /// within an edit or two of it, if there is one.
+    UnknownKeyword { keyword: Token, suggestion: Option<&'static str> },
     /// A statement has the wrong number of arguments: it takes from `fewest` to `most` (no
     /// limit when `None`); `usage` shows the statement's form.
     WrongArgumentCount { keyword: &'static str, fewest: u8, most: Option<u8>, found: usize, usage: &'static str },
@@ -144,7 +146,8 @@ impl fmt::Display for SceneErrorKind {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Self::InvalidUtf8 => f.write_str("the statement is not valid UTF-8 text"),
-            Self::UnknownKeyword { keyword } => write!(f, "unknown keyword {keyword}"),
+            Self::UnknownKeyword { keyword, suggestion: None } => write!(f, "unknown keyword {keyword}"),
+            Self::UnknownKeyword { keyword, suggestion: Some(suggestion) } => write!(f, "unknown keyword {keyword} (did you mean `{suggestion}`?)"),
             Self::WrongArgumentCount { keyword, fewest, most, found, usage } => {
                 f.write_str("`")?;
                 f.write_str(keyword)?;

@@ -23,6 +23,7 @@ mod object_description;
 mod optimizations;
 mod primitive;
 mod solid;
+pub(crate) mod validate;
 mod view;
 
 pub use colour::{Palette, Rgb4, Rgb888};
@@ -37,3 +38,5 @@ pub use optimizations::Optimizations;
 pub use primitive::{Primitive, SolidRange, Taper, Tube, VertexNormals};
 pub use solid::{enclosing_transform, for_each_node_box, solid_needs_and_box, Operation, PreparedSolidNode, SolidNeeds, SolidNode, MAX_HELD_SPANS, MAX_SOLID_NODES, NO_SKIP, MAX_SOLID_STACK, MAX_SPANS};
 pub use view::{Projection, Viewport, Window};
+pub(crate) use validate::{IntegerRange, RealRange};
+pub(crate) use validate as ranges;

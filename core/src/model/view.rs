@@ -11,11 +11,14 @@ pub struct Viewport {
 }
 
 impl Viewport {
+    /// Pixels across (1 for corners in the wrong order, which `Description::validate`
+    /// refuses: never an overflow).
     pub const fn width(&self) -> u16 {
-        self.x2 - self.x1 + 1
+        self.x2.saturating_sub(self.x1).saturating_add(1)
     }
+    /// Pixels down (as [`Viewport::width`]).
     pub const fn height(&self) -> u16 {
-        self.y2 - self.y1 + 1
+        self.y2.saturating_sub(self.y1).saturating_add(1)
     }
     pub const fn pixel_count(&self) -> u32 {
         self.width() as u32 * self.height() as u32

@@ -53,8 +53,8 @@ mod tests;
 
 
 use crate::storage::List;
-use crate::model::{SceneError, SceneErrorKind, Token};
-use crate::model::{Antialias, Light, LightSource, Description, ObjectDescription, Optimizations, Primitive, Projection, Taper, Tube, SceneDescription, Viewport, Window, MAX_DEPTH, MAX_LIGHTS};
+use crate::model::{ranges, IntegerRange, RealRange, SceneError, SceneErrorKind, Token};
+use crate::model::{Antialias, Light, LightSource, Description, ObjectDescription, Optimizations, Primitive, Projection, Taper, Tube, SceneDescription, Viewport, Window, MAX_LIGHTS};
 use crate::model::{enclosing_transform, Operation, SolidNode, SolidRange, MAX_SOLID_NODES};
 use crate::model::Rgb4;
 
@@ -191,6 +191,9 @@ macro_rules! keywords {
         }
 
         impl Keyword {
+            /// The statements' keywords (the primitives' and solids' are theirs).
+            const NAMES: &'static [&'static str] = &[$($name,)*];
+
             fn from_token(token: &str) -> Option<Self> {
                 match token {
                     $($name => Some(Keyword::$variant),)*
@@ -305,8 +308,15 @@ impl<'a> Statement<'a> {
         }
     }
 
-    fn non_negative(&self, index: usize, what: &'static str) -> Result<f64, SceneError> {
-        self.bounded(index, what, 0.0, f64::INFINITY, "at least 0")
+    /// A real in one of the format's ranges (`model::ranges`, which `Description::validate`
+    /// checks too).
+    fn ranged(&self, index: usize, range: RealRange) -> Result<f64, SceneError> {
+        self.bounded(index, range.what, range.low, range.high, range.range)
+    }
+
+    /// An integer in one of the format's ranges.
+    fn integer_in(&self, index: usize, range: IntegerRange) -> Result<i32, SceneError> {
+        self.integer(index, range.what, range.min, range.max)
     }
 
     /// An integer in `min..=max`.
@@ -357,6 +367,51 @@ impl<'a> Statement<'a> {
 
 const OPTIMIZE_EXPECTED: &str = "`all` or `none` on its own, or any of `pixelbuffer`, `extents`, `grid`, `sortlist`";
 
+/// The keyword `token` was most likely meant to be: one within an edit of it, or two for a word
+/// of six letters or more, ignoring case; `None` when none is that close (`bogus` is two edits
+/// from `torus`, and no typo of it).
+fn nearest_keyword(token: &str) -> Option<&'static str> {
+    let allowed = if token.chars().count() < 6 { 1 } else { 2 };
+    let names = Keyword::NAMES.iter().copied().chain(Primitive::ALL.iter().map(|primitive| primitive.name())).chain(Operation::ALL.iter().map(|operation| operation.name()));
+    names.map(|name| (edit_distance(token, name), name)).filter(|(distance, _)| *distance <= allowed).min_by_key(|(distance, _)| *distance).map(|(_, name)| name)
+}
+
+/// Levenshtein's distance between `a` and `b`, case ignored: insertions, deletions and
+/// substitutions (a keyword is at most [`KEYWORD_LETTERS`] letters; longer words are far).
+fn edit_distance(a: &str, b: &str) -> usize {
+    let mut previous = [0usize; KEYWORD_LETTERS + 1];
+    let mut current = [0usize; KEYWORD_LETTERS + 1];
+    let mut letters = ['\0'; KEYWORD_LETTERS];
+    let mut count = 0;
+    for c in b.chars() {
+        let Some(slot) = letters.get_mut(count) else { return usize::MAX };
+        *slot = c.to_ascii_lowercase();
+        count += 1;
+    }
+    let b = letters.get(..count).unwrap_or(&[]);
+    if a.chars().count() > KEYWORD_LETTERS + 2 {
+        return usize::MAX;
+    }
+    for (j, slot) in previous.iter_mut().enumerate().take(b.len() + 1) {
+        *slot = j;
+    }
+    for (i, x) in a.chars().map(|c| c.to_ascii_lowercase()).enumerate() {
+        current[0] = i + 1;
+        for (j, y) in b.iter().enumerate() {
+            // j < b.len() <= KEYWORD_LETTERS, so j + 1 is within both rows.
+            let (Some(&diagonal), Some(&above), Some(&left)) = (previous.get(j), previous.get(j + 1), current.get(j)) else { break };
+            if let Some(slot) = current.get_mut(j + 1) {
+                *slot = (diagonal + usize::from(x != *y)).min(above + 1).min(left + 1);
+            }
+        }
+        previous = current;
+    }
+    previous.get(b.len()).copied().unwrap_or(usize::MAX)
+}
+
+/// The longest keyword's letters (`intersection`) with room.
+const KEYWORD_LETTERS: usize = 16;
+
 /// Parses one statement (comment already removed) into the scene.
 fn statement<L: List<ObjectDescription>>(
     code: &str,
@@ -369,7 +424,7 @@ fn statement<L: List<ObjectDescription>>(
         return Ok(());
     };
     let keyword = Keyword::from_token(first)
-        .ok_or_else(|| SceneError::new(line, SceneErrorKind::UnknownKeyword { keyword: Token::new(first) }))?;
+        .ok_or_else(|| SceneError::new(line, SceneErrorKind::UnknownKeyword { keyword: Token::new(first), suggestion: nearest_keyword(first) }))?;
     if keyword.needs_object() && scene.objects.is_empty() {
         return Err(SceneError::new(line, SceneErrorKind::ObjectRequired { keyword: keyword.name() }));
     }
@@ -389,10 +444,11 @@ fn statement<L: List<ObjectDescription>>(
     let s = Statement { line, keyword, args };
     match keyword {
         Keyword::Viewport => {
-            let x1 = s.integer(0, "viewport X1", 0, 32767)?;
-            let x2 = s.integer(1, "viewport X2", 0, 32767)?;
-            let y1 = s.integer(2, "viewport Y1", 0, 32767)?;
-            let y2 = s.integer(3, "viewport Y2", 0, 32767)?;
+            let [x1_range, x2_range, y1_range, y2_range] = ranges::VIEWPORT;
+            let x1 = s.integer_in(0, x1_range)?;
+            let x2 = s.integer_in(1, x2_range)?;
+            let y1 = s.integer_in(2, y1_range)?;
+            let y2 = s.integer_in(3, y2_range)?;
             if x1 > x2 {
                 return Err(s.error(SceneErrorKind::InvalidRectangle { what: "viewport", requirement: "X1 must not be greater than X2" }));
             }
@@ -439,7 +495,7 @@ fn statement<L: List<ObjectDescription>>(
                 0 => Light::Point(s.vector(1, ["light point X", "light point Y", "light point Z"])?),
                 _ => Light::Direction(s.direction(1, ["light direction DX", "light direction DY", "light direction DZ"])?),
             };
-            let intensity = if found == 5 { s.non_negative(4, "light I")? } else { 1.0 };
+            let intensity = if found == 5 { s.ranged(4, ranges::LIGHT_INTENSITY)? } else { 1.0 };
             // The first statement replaces the default light; each later one adds a light.
             if scene.lines.light == 0 {
                 scene.light = light;
@@ -452,18 +508,18 @@ fn statement<L: List<ObjectDescription>>(
                     .map_err(|_| s.error(SceneErrorKind::TooManyLights { capacity: MAX_LIGHTS }))?;
             }
         }
-        Keyword::Depth => scene.depth = s.integer(0, "depth", 1, i32::from(MAX_DEPTH))? as u8,
+        Keyword::Depth => scene.depth = s.integer_in(0, ranges::DEPTH)? as u8,
         Keyword::Antialias => {
             scene.antialias = if found == 1 && s.arg(0) == "off" {
                 None
             } else {
-                let threshold = s.bounded(0, "antialias T", 0.0, 1.0, "from 0 to 1")?;
-                let levels = if found == 2 { s.integer(1, "antialias L", 1, 4)? as u8 } else { 2 };
+                let threshold = s.ranged(0, ranges::ANTIALIAS_THRESHOLD)?;
+                let levels = if found == 2 { s.integer_in(1, ranges::ANTIALIAS_LEVELS)? as u8 } else { 2 };
                 Some(Antialias { threshold, levels })
             };
             scene.lines.antialias = line;
         }
-        Keyword::Ambient => scene.ambient = s.non_negative(0, "ambient")?,
+        Keyword::Ambient => scene.ambient = s.ranged(0, ranges::AMBIENT)?,
         Keyword::Background => scene.background = s.integer(0, "background", 0, 255)? as u8,
         Keyword::Shadows => scene.shadows = s.on_off()?,
         Keyword::Dither => scene.dither = s.on_off()?,
@@ -688,22 +744,22 @@ fn apply(s: &Statement<'_>, object: &mut ObjectDescription) -> Result<(), SceneE
             object.world_from_object.rotate(axis, degrees);
         }
         Keyword::Translate => object.world_from_object.translate(s.vector(0, ["translate TX", "translate TY", "translate TZ"])?),
-        Keyword::Colour => material.colour = s.nibble(0, "colour")?,
-        Keyword::Ka => material.ka = s.non_negative(0, "ka")?,
-        Keyword::Kd => material.kd = s.non_negative(0, "kd")?,
-        Keyword::Ks => material.ks = s.non_negative(0, "ks")?,
-        Keyword::Pwr => material.pwr = s.bounded(0, "pwr", 0.0, 1.0e6, "from 0 to 1000000")?,
-        Keyword::Rnd => material.rnd = s.non_negative(0, "rnd")?,
+        Keyword::Colour => material.colour = s.integer_in(0, ranges::COLOUR)? as u8,
+        Keyword::Ka => material.ka = s.ranged(0, ranges::KA)?,
+        Keyword::Kd => material.kd = s.ranged(0, ranges::KD)?,
+        Keyword::Ks => material.ks = s.ranged(0, ranges::KS)?,
+        Keyword::Pwr => material.pwr = s.ranged(0, ranges::PWR)?,
+        Keyword::Rnd => material.rnd = s.ranged(0, ranges::RND)?,
         Keyword::Cmy => {
             material.cmy = [
-                s.bounded(0, "cmy C", 0.0, 1.0, "from 0 to 1")?,
-                s.bounded(1, "cmy M", 0.0, 1.0, "from 0 to 1")?,
-                s.bounded(2, "cmy Y", 0.0, 1.0, "from 0 to 1")?,
+                s.ranged(0, ranges::CMY[0])?,
+                s.ranged(1, ranges::CMY[1])?,
+                s.ranged(2, ranges::CMY[2])?,
             ];
         }
-        Keyword::Reflect => material.reflect = s.bounded(0, "reflect", 0.0, 1.0, "from 0 to 1")?,
-        Keyword::Transmit => material.transmit = s.bounded(0, "transmit", 0.0, 1.0, "from 0 to 1")?,
-        Keyword::Ior => material.ior = s.bounded(0, "ior", 0.1, 10.0, "from 0.1 to 10")?,
+        Keyword::Reflect => material.reflect = s.ranged(0, ranges::REFLECT)?,
+        Keyword::Transmit => material.transmit = s.ranged(0, ranges::TRANSMIT)?,
+        Keyword::Ior => material.ior = s.ranged(0, ranges::IOR)?,
         _ => {}
     }
     Ok(())

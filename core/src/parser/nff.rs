@@ -70,7 +70,7 @@ pub fn parse_into_list<L: List<ObjectDescription>>(text: &[u8]) -> Result<Descri
                 push(&mut scene, object, line)?;
             }
             "p" | "pp" => reader.polygon(line, keyword == "pp", &mut scene)?,
-            other => return Err(SceneError::new(line, SceneErrorKind::UnknownKeyword { keyword: Token::new(other) })),
+            other => return Err(SceneError::new(line, SceneErrorKind::UnknownKeyword { keyword: Token::new(other), suggestion: None })),
         }
     }
     let camera = reader.camera(reader.tokens.line)?;

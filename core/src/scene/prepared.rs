@@ -218,7 +218,7 @@ where
     }
 
     /// Prepares the scene's settings from `description` with the objects given separately.
-    pub fn prepare_with_objects<L>(description: &Description<L>, descriptions: &[ObjectDescription]) -> Result<Self, SceneError> {
+    pub fn prepare_with_objects<L: Deref<Target = [ObjectDescription]>>(description: &Description<L>, descriptions: &[ObjectDescription]) -> Result<Self, SceneError> {
         let mut scene = Self::for_objects(C::Objects::default(), descriptions.len());
         scene.prepare_in_place(description, descriptions)?;
         Ok(scene)
@@ -226,11 +226,16 @@ where
 
     /// [`Scene::prepare_with_objects`] into `self`, every part written in place (any earlier
     /// scene is replaced).
-    pub fn prepare_in_place<L>(
+    pub fn prepare_in_place<L: Deref<Target = [ObjectDescription]>>(
         &mut self,
         description: &Description<L>,
         descriptions: &[ObjectDescription],
     ) -> Result<(), SceneError> {
+        // A description built in code is held to the format's ranges, as a parsed one is.
+        description.validate()?;
+        for object in descriptions {
+            object.validate()?;
+        }
         #[cfg(not(feature = "antialias"))]
         if description.antialias.is_some() {
             return Err(SceneError { line: description.lines.antialias, kind: SceneErrorKind::FeatureNotCompiled { feature: "antialias", statement: "antialias" } });

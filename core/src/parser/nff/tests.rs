@@ -100,7 +100,7 @@ fn comments_and_numbers_across_lines() {
 
 #[test]
 fn errors_name_the_line_and_the_problem() {
-    assert_eq!(err(&format!("{VIEW}q 1 2 3")), SceneError::new(8, SceneErrorKind::UnknownKeyword { keyword: Token::new("q") }));
+    assert_eq!(err(&format!("{VIEW}q 1 2 3")), SceneError::new(8, SceneErrorKind::UnknownKeyword { keyword: Token::new("q"), suggestion: None }));
     assert_eq!(err(&format!("{VIEW}s 0 0 zero 1")).kind, SceneErrorKind::MalformedNumber { what: "s centre", token: Token::new("zero") });
     assert_eq!(err(&format!("{VIEW}s 0 0 0")), SceneError::new(8, SceneErrorKind::UnexpectedEnd { expected: "s radius" }));
     assert_eq!(err(&format!("{VIEW}p 4\n0 0 0\n1 0 0\n1 1 0\n")).kind, SceneErrorKind::UnexpectedEnd { expected: "p vertex" });
