@@ -29,6 +29,10 @@ done
 # a token stack reserve instead (the fit is tests/tests/firmware_qemu.rs's).
 (cd firmware && MICROTRACE_SCENE="$PWD/../scenes/snooker.mts" MICROTRACE_STACK_RESERVE=256 cargo clippy --quiet --release --no-default-features --features lm3s811evb,sphere --target thumbv7m-none-eabi -- -D warnings)
 
+echo "== the core's documentation, warnings denied (every feature, and the default ones)" >&2
+RUSTDOCFLAGS="-D warnings" cargo doc --quiet -p microtrace --no-deps --all-features
+RUSTDOCFLAGS="-D warnings" cargo doc --quiet -p microtrace --no-deps
+
 echo "== the core packages as a crate (cargo package builds the packaged copy)" >&2
 # --allow-dirty: a developer's work tree may have uncommitted changes; CI's clone has none.
 cargo package --quiet -p microtrace --allow-dirty

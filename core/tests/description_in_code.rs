@@ -1,6 +1,8 @@
 //! A scene built in code is held to the format's ranges, as a parsed one is
 //! (`Description::validate`, called by preparation): the same messages as the parser's, without
 //! a line; and no description, however wrong, makes preparation or the render panic.
+// Tests may unwrap (the core's own code may not).
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use microtrace::model::{Antialias, Light, Projection, SceneDescription, SceneErrorKind, Viewport, Window};
 use microtrace::pixel::FrameBuffer;
@@ -27,7 +29,8 @@ fn both(change: impl FnOnce(&mut SceneDescription<4>), statement: &str) -> (Stri
 
 #[test]
 fn a_description_built_in_code_is_refused_as_its_text_would_be() {
-    let cases: [(fn(&mut SceneDescription<4>), &str); 6] = [
+    type Change = fn(&mut SceneDescription<4>);
+    let cases: [(Change, &str); 6] = [
         (|d| d.objects[1].material.colour = 15 + 185, "colour 200\n"),
         (|d| d.objects[1].material.reflect = 5.0, "reflect 5\n"),
         (|d| d.objects[1].material.ior = -1.0, "ior -1\n"),

@@ -124,8 +124,7 @@ fn write_report(scene: &PreparedScene, statistics: &Passes, stack_peak_bytes: u3
     report.integer("width", scene::WIDTH as u64);
     report.integer("height", scene::HEIGHT as u64);
     report.integer("objects", scene::OBJECT_COUNT as u64);
-    // What the grid holds and what its pool could (sized by the build: xtask's
-    // MICROTRACE_GRID_ENTRIES_PER_OBJECT, into the scene's `Arrays`).
+    // What the grid holds and what its storage could (a baked grid holds exactly its entries).
     report.integer("grid_entries", scene.acceleration.grid_entries() as u64);
     report.integer("grid_capacity", scene.acceleration.grid_capacity() as u64);
     report_statistics(&mut report, statistics);

@@ -193,7 +193,7 @@ fn number_after(text: &str, label: &str) -> u64 {
     digits.parse().unwrap_or_else(|_| panic!("no number after {label:?} in {text}"))
 }
 
-/// 512 spheres (the most the build prepares ahead) rendered at 320x240 into a framebuffer need
+/// 512 spheres (the most the build bakes) rendered at 320x240 into a framebuffer need
 /// about 90 KB: 75 KB of framebuffer, the budget's 12 KB of stack and the prepared scene, which
 /// no longer grows with the objects (every table of the view, the grid, the shadow tables and
 /// the hierarchy are made at build time, in flash): more than either board's 64 KB. The build

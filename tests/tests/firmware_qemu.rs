@@ -91,9 +91,8 @@ fn firmware_matches_host(name: &str, board: Board) {
     for (key, host) in counted {
         assert_eq!(numbers[key], host, "{name} on {}: {key}, firmware against host", board.name());
     }
-    // The grid's pool is sized by what the scene's grid holds (xtask sets the build's
-    // MICROTRACE_GRID_ENTRIES_PER_OBJECT): the entries fit, with less than one spare entry per
-    // object, and a scene that asks for the grid has it (an overflow would switch it off).
+    // The grid is baked in flash, exactly its entries: they fit, with less than one spare entry
+    // per object, and a scene that asks for the grid has it (an overflow would switch it off).
     let (entries, capacity, objects) = (numbers["grid_entries"], numbers["grid_capacity"], numbers["objects"]);
     assert!(entries <= capacity && capacity < entries + objects, "{name} on {}: grid pool of {capacity} for {entries} entries and {objects} objects", board.name());
     assert_eq!(entries > 0, description.optimizations.grid, "{name} on {}: the grid holds {entries} entries", board.name());
@@ -207,7 +206,7 @@ fn firmware_picture_matches_host_in<N: microtrace::number::Number>(name: &str, b
 
 /// No f64 on the target and no panic path: a thesis-scene build in a number type other than
 /// f64 links no double-precision routine (the scene reaches flash already in the number type,
-/// `microtrace::scene::ahead`), no `core::panicking` symbol and no `core::fmt` code (indices in
+/// `microtrace::bake`), no `core::panicking` symbol and no `core::fmt` code (indices in
 /// range by construction). The ELF audit is `xtask::elf`'s, which
 /// `the_linked_audit_agrees_with_llvm_nm` checks against llvm-nm; the names are in the run's
 /// linked-audit.txt.

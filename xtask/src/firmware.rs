@@ -364,7 +364,7 @@ fn primitive_features(scene: &Path) -> Result<Vec<&'static str>, String> {
 }
 
 /// The scene parsed whatever its size (its features, for a build that only sizes a scene of
-/// more objects than the build prepares ahead: firmware/build.rs's `size_only`).
+/// more objects than the build bakes: firmware/build.rs's `size_only`).
 fn parse_any_size(scene: &Path) -> Result<microtrace::model::Description<Vec<microtrace::model::ObjectDescription>>, String> {
     let text = std::fs::read(scene).map_err(|error| format!("scene {}: {error}", scene.display()))?;
     microtrace::parser::parse_file(&scene.to_string_lossy(), &text).map_err(|error| {

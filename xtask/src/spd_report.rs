@@ -3,7 +3,7 @@
 //! own `optimize` (issue 24): the small ones of `scenes/spd/` rendered under QEMU and set
 //! against the host's render, and for every scene the chip cannot hold, the bytes of RAM it would
 //! need (the firmware's own RAM check, in the target's layout: a scene of more objects than the
-//! build prepares ahead is compiled only to be sized, firmware/build.rs's `size_only`). Writes
+//! build bakes is compiled only to be sized, firmware/build.rs's `size_only`). Writes
 //! `docs/spd-firmware.md`.
 
 use std::io::Read as _;
@@ -14,7 +14,7 @@ use crate::firmware::{self, Board, FirmwareOptions};
 /// The small SPD scenes shipped uncompressed.
 const SMALL: [&str; 7] = ["balls1", "balls2", "jacks1", "lattice1", "rings1", "shells1", "tree3"];
 /// The standard sizes (`scenes/spd/full/*.nff.gz`), and the ladders' rungs of more objects
-/// than the blocker sets hold but fewer than the build prepares ahead (a hierarchy in flash).
+/// than the blocker sets hold but fewer than the build bakes (a hierarchy in flash).
 const FULL: [&str; 9] = ["tree-s6", "rings-s2", "balls", "gears", "mount", "rings", "teapot", "tetra", "tree"];
 const BOARD: Board = Board::Mps2An386;
 const NUMBER: &str = "f32";
@@ -95,14 +95,14 @@ pub fn markdown(rows: &[SpdRow]) -> String {
          board's budget of 256 KB of flash and 64 KB of RAM and the scene's own `optimize`: the small\n\
          scenes of `scenes/spd/` rendered (frame instructions as the firmware report counts them; `host`:\n\
          `=` when the picture is the host's byte for byte), and for a scene the board cannot hold, the\n\
-         RAM the build's check says it needs (firmware/src/ram.rs). A scene the build prepares ahead (up\n\
+         RAM the build's check says it needs (firmware/src/ram.rs). A scene the build bakes (up\n\
          to 512 objects) has its objects, screen grid, shadow tables and per-object tables of the view\n\
          made at build time and kept in flash (a scene of more than 128 objects a hierarchy of boxes\n\
          instead of shadow tables: docs/optimizations.md); in RAM it keeps only what the ray tree needs\n\
          per object (its optics, bounding spheres and space grid, for a scene that reflects). A scene\n\
-         of more than 512 objects is sized, not prepared (firmware/build.rs), as if its tables were\n\
-         built on the chip: the prepared scene's tables and the stack the shadow tables take, per\n\
-         object, with the grid's pool at the core's default of 24 entries an object.\n\n\
+         of more than 512 objects is sized, not baked (firmware/build.rs, `microtrace::bake::bake_sizes`),\n\
+         as a bake would keep it: its tables in flash, in RAM what the ray tree needs and the stack\n\
+         the shadow tables take per object where a render builds them.\n\n\
          | scene | objects | on the chip | frame instructions | instructions per pixel | flash bytes | static RAM bytes | peak stack bytes | host |\n\
          |---|---:|---|---:|---:|---:|---:|---:|---|\n",
     );

@@ -2,7 +2,7 @@
 //! transforms and materials, the camera, the lights, the shading constants) and everything that
 //! depends on its view and lights (the test order, the extents, the depth bounds, the shadow
 //! capsules, the screen grid, the shadow tables, the hierarchy) made on the host in the number
-//! type and written as one self-contained Rust file ([`bake`], with the `alloc` feature), so
+//! type and written as one self-contained Rust file (`bake`, with the `alloc` feature), so
 //! that it reaches flash already in the number type; the chip's preparation from it
 //! ([`Prepared::prepare_baked`]) only copies a few settings and hands the tables to the scene's
 //! own [`Config`], whose storage reads them in flash ([`InFlash`](crate::storage::InFlash)).
@@ -10,7 +10,7 @@
 //!
 //! # Examples
 //!
-//! A board's `build.rs` bakes the scene ([`bake`]; the `alloc` feature, in
+//! A board's `build.rs` bakes the scene (`bake`; the `alloc` feature, in
 //! `[build-dependencies]`), and its `main.rs` includes the file and prepares it in place:
 //!
 //! ```
@@ -49,7 +49,7 @@ use crate::shading::ShadingConstants;
 use crate::storage::{List, Table};
 
 /// A baked scene's settings and tables, as its file keeps them in flash (`I`: its tables'
-/// index type). Every field exists whatever the crate's features, so the file [`bake`] writes
+/// index type). Every field exists whatever the crate's features, so the file `bake` writes
 /// compiles in any build; [`Prepared::prepare_baked`] refuses what the build cannot draw.
 #[derive(Debug)]
 pub struct BakedScene<'a, N, I = u16> {

@@ -123,7 +123,7 @@ impl<N: Number> Camera<N> {
         }
     }
 
-    /// A camera from its parts in the number type (a scene prepared ahead: `scene::ahead`):
+    /// A camera from its parts in the number type (a baked scene: `crate::bake`):
     /// the sample grid as [`Camera::sampling`] gives it, and the eye of a perspective view or
     /// the unit direction of a parallel one.
     pub const fn from_parts(viewport: Viewport, origin: [N; 2], spacing: [N; 2], view_plane: N, eye: Option<Vector3<N>>, direction: Vector3<N>) -> Self {

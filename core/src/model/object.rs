@@ -8,7 +8,7 @@ use crate::geometry::AffineTransform;
 
 /// Where a prepared scene's objects live: anything that reads as a slice of them. The host's
 /// scene owns them (`heapless::Vec`, the default, prepared from a description); the firmware's
-/// reads them in flash, where its build put them prepared ahead (`OBJECTS_AHEAD`), so that they
+/// reads them in flash, where its build baked them (`OBJECTS`, `crate::bake`), so that they
 /// take no RAM: only what depends on the view (each object's eye) is in RAM.
 pub trait Objects<N>: Deref<Target = [Object<N>]> {}
 

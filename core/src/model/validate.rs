@@ -161,10 +161,11 @@ impl<L: core::ops::Deref<Target = [ObjectDescription]>> Description<L> {
         let line = self.lines.window;
         finite(line, "window", &[w.x1, w.x2, w.y1, w.y2])?;
         let rectangle = |requirement| Err(SceneError::new(line, SceneErrorKind::InvalidRectangle { what: "window", requirement }));
-        if !(w.x1 < w.x2) {
+        // Finite by now, so `>=` is the negation of `<`.
+        if w.x1 >= w.x2 {
             return rectangle("X1 must be less than X2");
         }
-        if !(w.y1 < w.y2) {
+        if w.y1 >= w.y2 {
             return rectangle("Y1 must be less than Y2");
         }
         if !(w.x2 - w.x1).is_finite() || !(w.y2 - w.y1).is_finite() {

@@ -359,7 +359,7 @@ impl Number for SoftFloat {
     const RESOLUTION: Self = Self::ZERO;
     const ZERO: Self = Self { mantissa: 0, exponent: ZERO_EXPONENT };
     const ONE: Self = Self { mantissa: LOWEST_MAGNITUDE as i32, exponent: 0 };
-    /// Not zero (zero's exponent is [`ZERO_EXPONENT`]): only a placeholder, never computed with.
+    /// Not zero (zero's exponent is `ZERO_EXPONENT`): only a placeholder, never computed with.
     const ZEROED: Self = Self { mantissa: 0, exponent: 0 };
     const MAX: Self = Self { mantissa: (2 * LOWEST_MAGNITUDE - 1) as i32, exponent: MAX_EXPONENT };
 

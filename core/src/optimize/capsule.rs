@@ -12,7 +12,7 @@
 //! `R± = (a·b ± r·√(a² + (b² − r²)·|g|²)) / (b² − r²)`, a = g·c, b = c_z (c the centre from the
 //! eye). For a parallel view the image position is linear in p and the range is `f(c) ± r·|∇f|`.
 //! Four such functions (column, row and the two diagonals) give the octagon of
-//! [`Extent`](super::extents::Extent).
+//! [`Extent`].
 //!
 //! Conservative: the capsule is widened before conversion, every range by 1/8 pixel (the
 //! rounding of the number type's rays and hits, as `projection::MARGIN`) plus a relative 2⁻¹⁶

@@ -131,7 +131,7 @@ impl Screen {
     }
 
     /// The object's silhouette in image coordinates. A silhouette point at or behind the eye
-    /// plane (digest B16) clips the hull at the eye ([`Screen::project_clipped`]); `Whole` when
+    /// plane (digest B16) clips the hull at the eye (`Screen::project_clipped`); `Whole` when
     /// that fails or for rays along the view plane (B17). An object whose bounding volume lies
     /// wholly behind the rays' origins (every vertex behind the eye plane, or behind the
     /// parallel view plane, by a margin) is `Invisible`: no primary ray can reach it.

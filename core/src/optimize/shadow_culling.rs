@@ -393,7 +393,7 @@ impl BlockerSet {
 
     pub const EMPTY: Self = Self { words: [0; 4] };
 
-    /// The set of [`BlockerSet::words`] (a table written ahead, `scene::ahead`).
+    /// The set of [`BlockerSet::words`] (a baked table, `crate::bake`).
     pub const fn from_words(words: [u32; 4]) -> Self {
         Self { words }
     }
@@ -430,7 +430,7 @@ impl<N> crate::storage::Unset for ShadowTables<'_, N> {
 }
 
 /// Which objects may shadow which: `blockers[r]` gets `b` (for `b` < 128) when a shadow
-/// ray from object `r` may meet object `b` ([`LightFootprint::may_shadow`]). Sweep and prune
+/// ray from object `r` may meet object `b` ([`LightReach::may_shadow`]). Sweep and prune
 /// (`order` is scratch space, one entry per object): the footprints sorted by their boxes' low
 /// x, each compared only with those whose x range overlaps its own, so the work grows with the
 /// objects and the overlapping pairs, not with all pairs.

@@ -25,9 +25,9 @@ mod row_display;
 pub use frame_buffer::FrameBuffer;
 pub use mock::MockSink;
 #[cfg(feature = "embedded-graphics")]
-pub use colour_map::{lut_colour, ColourMap, LutColour};
+pub use colour_map::{lut_colour, ColourMap, LutColour, RgbColour};
 #[cfg(feature = "embedded-graphics")]
-pub use draw_target::{DrawTargetSink, GreyDrawTargetSink};
+pub use draw_target::{Borrowed, DrawTargetSink, GreyDrawTargetSink};
 #[cfg(feature = "embedded-graphics")]
 pub use error_diffusion::{tone, ErrorDiffusion};
 #[cfg(feature = "embedded-graphics")]
@@ -37,7 +37,7 @@ pub use ordered_dither::{dither_colour, dither_lights, OrderedDither};
 #[cfg(feature = "embedded-graphics")]
 pub use row_display::RowDisplaySink;
 
-/// Something that accepts pixels of type `P`: palette indices (`u8`) in PGA mode, [`Rgb888`]
+/// Something that accepts pixels of type `P`: palette indices (`u8`) in PGA mode, [`Rgb888`](crate::model::Rgb888)
 /// in RGB mode.
 pub trait PixelSink<P: Copy> {
     /// Stores one pixel. Coordinates outside the sink are ignored.

@@ -37,12 +37,12 @@ fn draw_target_adapters_go_through_the_look_up_table() {
     palette.entries[17] = Rgb4::new(15, 0, 0);
     palette.entries[18] = Rgb4::new(0, 15, 0);
 
-    let mut colour = DrawTargetSink { target: MockDisplay::<EgRgb888>::new(), palette: &palette, offset: Point::new(1, 2) };
+    let mut colour = DrawTargetSink { target: MockDisplay::<EgRgb888>::new(), colours: crate::pixel::LutColour::new(&palette), offset: Point::new(1, 2) };
     colour.write_row(0, 0, &[17, 18]);
     assert_eq!(colour.target.get_pixel(Point::new(1, 2)), Some(EgRgb888::RED));
     assert_eq!(colour.target.get_pixel(Point::new(2, 2)), Some(EgRgb888::GREEN));
 
-    let mut grey = GreyDrawTargetSink { target: MockDisplay::<Gray4>::new(), palette: &palette, offset: Point::zero() };
+    let mut grey = GreyDrawTargetSink { target: MockDisplay::<Gray4>::new(), colours: crate::pixel::LutGrey::new(&palette), offset: Point::zero() };
     grey.set_pixel(0, 0, 15); // grey ramp shade 15: white
     grey.set_pixel(1, 0, 17); // pure red: luma 0.299 · 15 = 4.5 -> 4
     grey.set_pixel(2, 0, 18); // pure green: 0.587 · 15 = 8.8 -> 9
@@ -68,14 +68,14 @@ fn fill_row_fast_paths_match_the_default() {
 
     let mut palette = Palette::grey();
     palette.entries[17] = Rgb4::new(15, 0, 0);
-    let mut filled = DrawTargetSink { target: MockDisplay::<EgRgb888>::new(), palette: &palette, offset: Point::new(1, 2) };
-    let mut pixel_by_pixel = DrawTargetSink { target: MockDisplay::<EgRgb888>::new(), palette: &palette, offset: Point::new(1, 2) };
+    let mut filled = DrawTargetSink { target: MockDisplay::<EgRgb888>::new(), colours: crate::pixel::LutColour::new(&palette), offset: Point::new(1, 2) };
+    let mut pixel_by_pixel = DrawTargetSink { target: MockDisplay::<EgRgb888>::new(), colours: crate::pixel::LutColour::new(&palette), offset: Point::new(1, 2) };
     filled.fill_row(2, 3, 5, 17);
     (2..7).for_each(|x| pixel_by_pixel.set_pixel(x, 3, 17));
     filled.target.assert_eq(&pixel_by_pixel.target);
 
-    let mut filled = GreyDrawTargetSink { target: MockDisplay::<Gray4>::new(), palette: &palette, offset: Point::zero() };
-    let mut pixel_by_pixel = GreyDrawTargetSink { target: MockDisplay::<Gray4>::new(), palette: &palette, offset: Point::zero() };
+    let mut filled = GreyDrawTargetSink { target: MockDisplay::<Gray4>::new(), colours: crate::pixel::LutGrey::new(&palette), offset: Point::zero() };
+    let mut pixel_by_pixel = GreyDrawTargetSink { target: MockDisplay::<Gray4>::new(), colours: crate::pixel::LutGrey::new(&palette), offset: Point::zero() };
     filled.fill_row(0, 1, 4, 17);
     (0..4).for_each(|x| pixel_by_pixel.set_pixel(x, 1, 17));
     filled.target.assert_eq(&pixel_by_pixel.target);

@@ -5,6 +5,8 @@
 mod antialias;
 mod coverage;
 mod direct_lighting;
+#[cfg(feature = "embedded-graphics")]
+mod draw;
 mod fill;
 mod intersect;
 mod mode;
@@ -22,6 +24,8 @@ mod statistics;
 mod surface;
 mod walk;
 
+#[cfg(feature = "embedded-graphics")]
+pub use draw::{draw, Colours, SizeMismatch};
 pub use intersect::NearestHit;
 pub use primary::{nearest_hit, nearest_hit_cached};
 pub use order::{render, Order, Pass, Pga, PixelMode, Progressive, Rgb, Rows, Streamed, Whole};

@@ -33,7 +33,7 @@ const OFFSET_EXPONENT: i32 = -17;
 const RESOLUTION_STEPS_EXPONENT: i32 = 4;
 
 /// Where a shadow ray starts: `point` moved along the unit `normal` (which faces the light when
-/// a shadow ray is traced) by 2^[`OFFSET_EXPONENT`] of its magnitude, plus 16 steps of a
+/// a shadow ray is traced) by 2^`OFFSET_EXPONENT` of its magnitude, plus 16 steps of a
 /// fixed-point type's resolution.
 pub fn shadow_origin<N: Number>(point: Vector3<N>, normal: Vector3<N>) -> Vector3<N> {
     let magnitude = point.largest_component() + N::ONE;

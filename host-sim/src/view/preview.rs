@@ -25,7 +25,7 @@ use crate::scene_file::HostScene;
 use crate::heap::HostPrepared;
 use microtrace::with_number_kind;
 
-use super::sink::Borrowed;
+use microtrace::pixel::Borrowed;
 
 /// The kinds of display previewed; `L` in the window cycles them in this order.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]

@@ -9,7 +9,7 @@ use embedded_graphics::pixelcolor::Rgb888 as EgRgb888;
 use embedded_graphics::prelude::*;
 use embedded_graphics_simulator::{SimulatorDisplay, SimulatorEvent};
 use microtrace::model::Rgb888;
-use microtrace::pixel::{DrawTargetSink, FrameBuffer, PixelSink, PixelSource};
+use microtrace::pixel::{Borrowed, DrawTargetSink, FrameBuffer, LutColour, PixelSink, PixelSource, RgbColour};
 use microtrace::model::Palette;
 
 use super::window::View;
@@ -49,7 +49,7 @@ impl PixelSink<u8> for WindowSink<'_, u8> {
     }
     fn write_row(&mut self, x: u16, y: u16, values: &[u8]) {
         self.frame.write_row(x, y, values);
-        DrawTargetSink { target: Borrowed(&mut *self.display), palette: self.palette, offset: Point::zero() }.write_row(x, y, values);
+        DrawTargetSink { target: Borrowed(&mut *self.display), colours: LutColour::new(self.palette), offset: Point::zero() }.write_row(x, y, values);
     }
     fn row_done(&mut self, y: u16) {
         self.refresh(y);
@@ -62,8 +62,7 @@ impl PixelSink<Rgb888> for WindowSink<'_, Rgb888> {
     }
     fn write_row(&mut self, x: u16, y: u16, values: &[Rgb888]) {
         self.frame.write_row(x, y, values);
-        let pixels = values.iter().enumerate().map(|(i, [r, g, b])| Pixel(Point::new(i32::from(x) + i as i32, i32::from(y)), EgRgb888::new(*r, *g, *b)));
-        let _ = self.display.draw_iter(pixels);
+        DrawTargetSink { target: Borrowed(&mut *self.display), colours: RgbColour::new(), offset: Point::zero() }.write_row(x, y, values);
     }
     fn row_done(&mut self, y: u16) {
         self.refresh(y);
@@ -79,20 +78,3 @@ impl<P: Copy> PixelSource<P> for WindowSink<'_, P> {
     }
 }
 
-/// A borrowed draw target, so the core's sinks (which own their target) can draw into a display
-/// that outlives the render.
-pub struct Borrowed<'a, D>(pub &'a mut D);
-
-impl<D: Dimensions> Dimensions for Borrowed<'_, D> {
-    fn bounding_box(&self) -> embedded_graphics::primitives::Rectangle {
-        self.0.bounding_box()
-    }
-}
-
-impl<D: DrawTarget> DrawTarget for Borrowed<'_, D> {
-    type Color = D::Color;
-    type Error = D::Error;
-    fn draw_iter<I: IntoIterator<Item = Pixel<Self::Color>>>(&mut self, pixels: I) -> Result<(), Self::Error> {
-        self.0.draw_iter(pixels)
-    }
-}
