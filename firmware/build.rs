@@ -45,9 +45,10 @@ fn main() {
         .map(PathBuf::from)
         .unwrap_or_else(|| manifest_dir.join("../scenes/snooker.mts"));
     println!("cargo:rerun-if-changed={}", scene_path.display());
-    for name in ["MICROTRACE_SCENE", "MICROTRACE_NUMBER", "MICROTRACE_SIZE", "MICROTRACE_OPT", "MICROTRACE_FAULT_TEST", "MICROTRACE_STACK_RESERVE"] {
+    for name in KNOWN_VARIABLES {
         println!("cargo:rerun-if-env-changed={name}");
     }
+    refuse_unknown_variables();
     println!("cargo:rustc-check-cfg=cfg(microtrace_fault_test)");
     match env("MICROTRACE_FAULT_TEST").as_deref() {
         None | Some("0") => {}
@@ -56,7 +57,7 @@ fn main() {
     }
 
     let number_name = env("MICROTRACE_NUMBER").unwrap_or_else(|| "f32".into());
-    let bake = Bake { size: render_size(&env("MICROTRACE_SIZE").unwrap_or_else(|| "128x64".into())), number: number_kind(&number_name, board), f32_square_root: fpu_square_root(board) };
+    let bake = Bake { size: render_size(&env("MICROTRACE_SIZE").unwrap_or_else(|| "128x64".into())), number: number_kind(&number_name), f32_square_root: fpu_square_root(board) };
 
     let text = std::fs::read(&scene_path)
         .unwrap_or_else(|error| fail(&format!("cannot read the scene {}: {error}", scene_path.display())));
@@ -81,6 +82,23 @@ fn main() {
     memory.write(&mut source);
     write_stack_reserve(&mut source);
     std::fs::write(out_dir.join("scene.rs"), source).unwrap();
+}
+
+/// The variables this build reads (the module's comment says what each does).
+const KNOWN_VARIABLES: [&str; 6] = ["MICROTRACE_SCENE", "MICROTRACE_NUMBER", "MICROTRACE_SIZE", "MICROTRACE_OPT", "MICROTRACE_FAULT_TEST", "MICROTRACE_STACK_RESERVE"];
+
+/// The project's other tools' variables, which a test run may pass on to this build.
+const OTHER_TOOLS_VARIABLES: [&str; 5] = ["MICROTRACE_SEEDS", "MICROTRACE_REPLAY_DIR", "MICROTRACE_REPLAY_STRICT", "MICROTRACE_BUILD_ID", "MICROTRACE_PARENT_BUILD_ID"];
+
+/// A `MICROTRACE_*` variable this build does not know is a typo (`MICROTRACE_NUMBR=fixed` would
+/// otherwise build `f32` without a word): it stops the build, naming the known ones.
+fn refuse_unknown_variables() {
+    for (name, _) in std::env::vars_os() {
+        let Some(name) = name.to_str() else { continue };
+        if name.starts_with("MICROTRACE_") && !KNOWN_VARIABLES.contains(&name) && !OTHER_TOOLS_VARIABLES.contains(&name) {
+            fail(&format!("{name}: not a variable the firmware's build reads (it reads {})", KNOWN_VARIABLES.join(", ")));
+        }
+    }
 }
 
 /// The stack the RAM check keeps (`MICROTRACE_STACK_RESERVE`).
@@ -119,7 +137,7 @@ fn board_facts(scene_path: &Path, board: Board) -> String {
     let scene_name = scene_path.file_name().map(|name| name.to_string_lossy().into_owned()).unwrap_or_default();
     let mut out = String::new();
     writeln!(out, "// Written by firmware/build.rs from {}: do not edit.", scene_path.display()).unwrap();
-    writeln!(out, "pub const BOARD_NAME: &str = {:?};", board.name()).unwrap();
+    writeln!(out, "pub const BOARD_NAME: &str = {:?};", board.name).unwrap();
     writeln!(out, "pub const SCENE_NAME: &str = {scene_name:?};").unwrap();
     writeln!(out, "/// The scene file as the build was given it, for messages.").unwrap();
     writeln!(out, "pub const SCENE_PATH: &str = {:?};", scene_path.display().to_string()).unwrap();
@@ -146,72 +164,27 @@ fn fail(message: &str) -> ! {
     std::process::exit(1);
 }
 
-#[derive(Clone, Copy)]
-enum Board {
-    Lm3s6965evb,
-    Mps2An386,
-    Microbit,
-    Mps2An505,
-    Lm3s811evb,
-}
+// The board table, shared with xtask: `BoardFacts`, `BOARDS`.
+include!("boards.rs");
 
-impl Board {
-    const ALL: [Board; 5] = [Board::Lm3s6965evb, Board::Mps2An386, Board::Microbit, Board::Mps2An505, Board::Lm3s811evb];
-
-    /// The board's cargo feature.
-    fn name(self) -> &'static str {
-        match self {
-            Board::Lm3s6965evb => "lm3s6965evb",
-            Board::Mps2An386 => "mps2-an386",
-            Board::Microbit => "microbit",
-            Board::Mps2An505 => "mps2-an505",
-            Board::Lm3s811evb => "lm3s811evb",
-        }
-    }
-
-    /// Its folder under src/board/.
-    fn folder(self) -> String {
-        self.name().replace('-', "_")
-    }
-
-    /// The architecture of its core, as the target names it; `cfg(armv6m)`, `cfg(armv7m)` or
-    /// `cfg(armv8m)` for src/fault.rs (each has its own MPU, or none, and fault registers).
-    fn architecture(self) -> &'static str {
-        match self {
-            Board::Lm3s6965evb | Board::Mps2An386 | Board::Lm3s811evb => "armv7m",
-            Board::Microbit => "armv6m",
-            Board::Mps2An505 => "armv8m",
-        }
-    }
-
-    /// Has a single-precision FPU with `vsqrt.f32` (fpu-sqrt/src/lib.rs).
-    fn has_fpu(self) -> bool {
-        matches!(self, Board::Mps2An386 | Board::Mps2An505)
-    }
-}
+type Board = &'static BoardFacts;
 
 fn select_board() -> Board {
-    let enabled: Vec<Board> = Board::ALL
-        .into_iter()
-        .filter(|board| env(&format!("CARGO_FEATURE_{}", board.name().to_uppercase().replace('-', "_"))).is_some())
-        .collect();
+    let enabled: Vec<Board> = BOARDS.iter().filter(|board| env(&format!("CARGO_FEATURE_{}", board.name.to_uppercase().replace('-', "_"))).is_some()).collect();
     let [board] = enabled[..] else {
-        let names: Vec<String> = Board::ALL.iter().map(|board| format!("`{}`", board.name())).collect();
+        let names: Vec<String> = BOARDS.iter().map(|board| format!("`{}`", board.name)).collect();
         fail(&format!("enable exactly one board feature: {}", names.join(", ")))
     };
     for architecture in ["armv6m", "armv7m", "armv8m"] {
         println!("cargo:rustc-check-cfg=cfg({architecture})");
     }
-    println!("cargo:rustc-cfg={}", board.architecture());
+    println!("cargo:rustc-cfg={}", board.architecture);
     board
 }
 
 fn copy_memory_layout(manifest_dir: &Path, out_dir: &Path, board: Board) -> Memory {
-    let source = match board {
-        // The repository root's memory.x describes the default board.
-        Board::Lm3s6965evb => manifest_dir.join("../memory.x"),
-        _ => manifest_dir.join("src/board").join(board.folder()).join("memory.x"),
-    };
+    // The repository root's memory.x describes the default board (boards.rs).
+    let source = manifest_dir.join(board.memory_x);
     println!("cargo:rerun-if-changed={}", source.display());
     std::fs::copy(&source, out_dir.join("memory.x"))
         .unwrap_or_else(|error| fail(&format!("cannot copy {}: {error}", source.display())));
@@ -278,7 +251,7 @@ fn memory_region(text: &str, name: &str) -> Option<(u64, u64)> {
 }
 
 /// The number type (`MICROTRACE_NUMBER`), checking that the firmware feature it needs is on.
-fn number_kind(name: &str, _board: Board) -> NumberKind {
+fn number_kind(name: &str) -> NumberKind {
     let Some(kind) = NumberKind::from_name(name) else {
         let names: Vec<&str> = NumberKind::ALL.iter().map(|kind| kind.name()).collect();
         let (last, rest) = names.split_last().unwrap_or((&"", &[]));
@@ -297,7 +270,7 @@ fn number_kind(name: &str, _board: Board) -> NumberKind {
 /// (fpu-sqrt/src/lib.rs). Only with the hard-float ABI (an FPU); the M3 and M0 have none.
 fn fpu_square_root(board: Board) -> Option<&'static str> {
     let hard_float = env("CARGO_CFG_TARGET_ABI").as_deref() == Some("eabihf");
-    (board.has_fpu() && hard_float).then_some("microtrace_fpu_sqrt::VsqrtF32")
+    (board.fpu_square_root && hard_float).then_some("microtrace_fpu_sqrt::VsqrtF32")
 }
 
 fn render_size(text: &str) -> (u16, u16) {

@@ -299,3 +299,25 @@ fn a_scene_over_the_build_capacity_is_sized_and_says_what_it_needs() {
         assert!(error.contains(&expected) && error.contains(sized) && error.contains(&objects) && error.contains("the lm3s6965evb has 65,536"), "{error}");
     }
 }
+
+/// A `MICROTRACE_*` variable the firmware's build does not read is a typo, not a silent default:
+/// the build stops, naming it and the variables it reads (firmware/build.rs).
+#[test]
+fn an_unknown_microtrace_variable_stops_the_build() {
+    let firmware = xtask::firmware_dir();
+    let output = std::process::Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
+        .args(["build", "--release", "--quiet"])
+        .arg("--target-dir")
+        .arg(firmware.join("target"))
+        .current_dir(&firmware)
+        .env_remove("CARGO_TARGET_DIR")
+        .env_remove("RUSTFLAGS")
+        .env_remove("CARGO_ENCODED_RUSTFLAGS")
+        .env("MICROTRACE_NUMBR", "fixed")
+        .stdin(std::process::Stdio::null())
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(!output.status.success(), "the build ignored MICROTRACE_NUMBR");
+    assert!(stderr.contains("MICROTRACE_NUMBR: not a variable the firmware's build reads (it reads MICROTRACE_SCENE, MICROTRACE_NUMBER,"), "{stderr}");
+}

@@ -28,6 +28,11 @@ pub enum Board {
     Lm3s811evb,
 }
 
+/// The board table (firmware/boards.rs), shared with the firmware's build script.
+#[path = "../../firmware/boards.rs"]
+mod boards;
+pub use boards::{BoardDisplay, BoardFacts, BOARDS};
+
 impl Board {
     pub const ALL: [Board; 5] = [Board::Lm3s6965evb, Board::Mps2An386, Board::Microbit, Board::Mps2An505, Board::Lm3s811evb];
     /// The boards the firmware report runs every scene on: each core once, with the same
@@ -35,15 +40,21 @@ impl Board {
     /// 8 KB hold snooker, not every scene: its own test measures it.
     pub const REPORTED: [Board; 4] = [Board::Lm3s6965evb, Board::Mps2An386, Board::Microbit, Board::Mps2An505];
 
+    /// Its facts: its row of the board table, in `ALL`'s order (a test checks the names).
+    pub fn facts(self) -> &'static BoardFacts {
+        let row = match self {
+            Board::Lm3s6965evb => 0,
+            Board::Mps2An386 => 1,
+            Board::Microbit => 2,
+            Board::Mps2An505 => 3,
+            Board::Lm3s811evb => 4,
+        };
+        &BOARDS[row]
+    }
+
     /// The name on the command line, and the firmware's cargo feature.
     pub fn name(self) -> &'static str {
-        match self {
-            Board::Lm3s6965evb => "lm3s6965evb",
-            Board::Mps2An386 => "mps2-an386",
-            Board::Microbit => "microbit",
-            Board::Mps2An505 => "mps2-an505",
-            Board::Lm3s811evb => "lm3s811evb",
-        }
+        self.facts().name
     }
 
     pub fn from_name(name: &str) -> Option<Self> {
@@ -51,33 +62,38 @@ impl Board {
     }
 
     pub fn rust_target(self) -> &'static str {
-        match self {
-            Board::Lm3s6965evb | Board::Lm3s811evb => "thumbv7m-none-eabi",
-            Board::Mps2An386 => "thumbv7em-none-eabihf",
-            Board::Microbit => "thumbv6m-none-eabi",
-            Board::Mps2An505 => "thumbv8m.main-none-eabihf",
-        }
+        self.facts().rust_target
     }
 
     fn machine(self) -> Machine {
-        match self {
-            Board::Lm3s6965evb => Machine { name: "lm3s6965evb", cpu: "cortex-m3" },
-            Board::Mps2An386 => Machine { name: "mps2-an386", cpu: "cortex-m4" },
-            Board::Microbit => Machine { name: "microbit", cpu: "cortex-m0" },
-            Board::Mps2An505 => Machine { name: "mps2-an505", cpu: "cortex-m33" },
-            Board::Lm3s811evb => Machine { name: "lm3s811evb", cpu: "cortex-m3" },
-        }
+        Machine { name: self.facts().qemu_machine, cpu: self.facts().qemu_cpu }
     }
 
     /// Whether a render of `size` is shown on the board's display (and so captured): the
     /// lm3s6965evb's 128x64 OLED shows any; the lm3s811evb drives its 96x16 one only for a
     /// render of that size (firmware/src/board/lm3s811evb/mod.rs).
     pub fn shows(self, size: (u16, u16)) -> bool {
-        match self {
-            Board::Lm3s6965evb => true,
-            Board::Lm3s811evb => size == LM3S811EVB_OLED,
-            _ => false,
+        match self.facts().display {
+            BoardDisplay::AnySize => true,
+            BoardDisplay::Exactly(width, height) => size == (width, height),
+            BoardDisplay::None => false,
         }
+    }
+}
+
+#[cfg(test)]
+mod board_table_tests {
+    use super::{Board, BOARDS};
+
+    /// Every board has its own row, in order, and every row a board.
+    #[test]
+    fn each_board_is_its_row_of_the_table() {
+        assert_eq!(Board::ALL.len(), BOARDS.len());
+        for (board, row) in Board::ALL.into_iter().zip(BOARDS.iter()) {
+            assert_eq!(board.facts(), row);
+        }
+        let names: std::collections::BTreeSet<&str> = BOARDS.iter().map(|row| row.name).collect();
+        assert_eq!(names.len(), BOARDS.len(), "two rows with one name");
     }
 }
 
@@ -207,8 +223,7 @@ pub const FIRMWARE_SCENE_CAPACITY: usize = microtrace::bake::BAKE_CAPACITY;
 /// The firmware's render size (`MICROTRACE_SIZE`): the OLED's.
 pub const FIRMWARE_SIZE: (u16, u16) = (128, 64);
 
-/// The lm3s811evb's OLED: an SSD0303's 96x16 panel.
-pub const LM3S811EVB_OLED: (u16, u16) = (96, 16);
+pub use boards::LM3S811EVB_OLED;
 
 /// The number types firmware/build.rs knows.
 pub const NUMBERS: [&str; NumberKind::ALL.len()] = {
