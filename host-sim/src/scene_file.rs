@@ -64,6 +64,26 @@ pub fn load(path: &Path) -> anyhow::Result<Box<HostScene>> {
     }
 }
 
+/// Prints on stderr what may make `scene`'s picture other than meant
+/// (`microtrace::scene::SceneWarning`: no light statement, the eye or a light inside an object),
+/// each as `FILE:line N: warning: ...` (the line of the object or light it names), or
+/// `FILE: warning: ...`. Not errors: the render goes on.
+pub fn warn(path: &Path, scene: &HostScene) {
+    use microtrace::scene::SceneWarning;
+    scene.warnings(|warning| {
+        let line = match warning {
+            SceneWarning::EyeInsideObject { object } => object,
+            SceneWarning::LightInsideObject { light, .. } => light,
+            _ => 0,
+        };
+        if line == 0 {
+            eprintln!("{}: warning: {warning}", path.display());
+        } else {
+            eprintln!("{}:line {line}: warning: {warning}", path.display());
+        }
+    });
+}
+
 /// Parses `WxH`.
 pub fn parse_size(text: &str) -> Result<(u16, u16), String> {
     let (width, height) = text.split_once(['x', 'X']).ok_or_else(|| format!("expected WxH, got `{text}`"))?;

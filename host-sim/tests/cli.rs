@@ -283,3 +283,24 @@ fn edges_draw_where_the_first_surface_changes() {
     assert_eq!(black, expected);
     assert_eq!(black.len(), 23);
 }
+
+/// A scene that parses but may not look as meant is rendered with a warning naming the line:
+/// the eye inside an object, a light inside an opaque one, no light statement; a scene with
+/// none of these gets none.
+#[test]
+fn a_scene_that_may_not_look_right_is_rendered_with_a_warning() {
+    let directory = scratch("warnings");
+    let out = directory.join("inside.png");
+    let output = microtrace(&["render", "scenes/hard/eye_inside.mts", "--size", "16x16", "--out", out.to_str().unwrap()]);
+    assert!(output.status.success(), "{}", text(&output.stderr));
+    let stderr = text(&output.stderr);
+    assert!(stderr.contains("scenes/hard/eye_inside.mts:line 9: warning: the eye is inside the object of line 9"), "{stderr}");
+    assert!(stderr.contains("scenes/hard/eye_inside.mts:line 7: warning: the light of line 7 is inside the opaque object of line 9"), "{stderr}");
+    let unlit = directory.join("unlit.mts");
+    std::fs::write(&unlit, "perspective 0 0 10\nsphere\n").unwrap();
+    let output = microtrace(&["render", unlit.to_str().unwrap(), "--size", "16x16", "--out", directory.join("unlit.png").to_str().unwrap()]);
+    assert!(output.status.success(), "{}", text(&output.stderr));
+    assert!(text(&output.stderr).contains("unlit.mts: warning: no `light` statement: the default light is used"), "{}", text(&output.stderr));
+    let output = microtrace(&["render", "scenes/snooker.mts", "--size", "16x16", "--out", directory.join("snooker.png").to_str().unwrap()]);
+    assert!(!text(&output.stderr).contains("warning"), "{}", text(&output.stderr));
+}

@@ -3,7 +3,7 @@
 //!   `framebuffer.bin`, `oled.png` and `report.json` (`cargo xtask firmware`);
 //! - [`example::build`]: build a real-board example (`cargo xtask firmware-example`), and
 //!   [`example::check_image`], what the tests check in its ELF;
-//! - [`report::run`]: every thesis scene, number type and board, into README.md's table and
+//! - [`report::run`]: every thesis scene, number type and board, into docs/firmware-report.md's table and
 //!   `docs/firmware-report.json` (`cargo xtask firmware-report`); [`spd_report::run`], Haines'
 //!   SPD scenes on the Cortex-M4F into `docs/spd-firmware.md` (`--spd`).
 

@@ -31,9 +31,9 @@ fn usage() -> &'static str {
   cargo xtask firmware-report [--scene snooker|lattice] [--board B] [--number N] [--opt scene|none]
                               [--primitives scene|all]
       Runs both thesis scenes at 128x64 in every number type on both boards (and all-primitives
-      builds), writes the table into README.md and docs/firmware-report.json (several minutes).
+      builds), writes the table into docs/firmware-report.md and docs/firmware-report.json (several minutes).
       With any of the options, runs only what they keep and writes the partial report to
-      firmware/target/report/partial/ (README.md and docs/ are left alone).
+      firmware/target/report/partial/ (docs/ is left alone).
   cargo xtask firmware-report --spd
       Haines' SPD scenes at 128x64 on the mps2-an386 in f32: the small ones rendered, and the RAM
       each scene the board cannot hold would need; writes docs/spd-firmware.md."

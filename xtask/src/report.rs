@@ -2,7 +2,7 @@
 //! 128x64, every number type and every board (a Cortex-M0, M3, M4F and M33), plus all-primitives
 //! builds to set against the scene-only ones. Every run's picture is set against the host's
 //! render in the same number type (`host_render`); a build the board's RAM cannot hold is listed
-//! with what it needs. Writes the Markdown table into the root README.md (between
+//! with what it needs. Writes the Markdown table into docs/firmware-report.md (between
 //! [`START_MARKER`] and [`END_MARKER`]) and `docs/firmware-report.json`, which
 //! `microtrace bench --numbers` reads.
 
@@ -15,7 +15,7 @@ use crate::pico;
 
 pub const START_MARKER: &str = "<!-- firmware-report:start -->";
 pub const END_MARKER: &str = "<!-- firmware-report:end -->";
-/// The section the markers go in when README.md has none yet.
+/// The section the markers go in when docs/firmware-report.md has none yet.
 const SECTION_HEADING: &str = "## The firmware: cost and footprint";
 
 const SCENES: [&str; 2] = ["scenes/snooker.mts", "scenes/lattice.mts"];
@@ -72,7 +72,7 @@ pub struct ReportRun {
     /// (`host_render`): 0 when the chip and the host agree byte for byte.
     pub differing_pixels: u64,
     /// Where the flash goes (`elf::flash_symbols`): each area's bytes, largest first. Not in the
-    /// JSON: the README's table gives it for the thesis scenes on the Cortex-M3.
+    /// JSON: docs/firmware-report.md's table gives it for the thesis scenes on the Cortex-M3.
     pub flash_areas: Vec<(String, u64)>,
 }
 
@@ -228,7 +228,7 @@ fn examples_markdown(examples: &[ExampleRun]) -> String {
 
 /// A part of the report to run instead of all of it (`cargo xtask firmware-report --scene snooker
 /// --board mps2-an386 --number f32`): each field left `None` keeps every value. A partial report
-/// is written under `firmware/target/report/partial/`, never into README.md or
+/// is written under `firmware/target/report/partial/`, never into docs/firmware-report.md or
 /// `docs/firmware-report.json`, whose tables it would cut short.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct ReportFilter {
@@ -325,7 +325,7 @@ fn plan(filter: &ReportFilter) -> Vec<(PathBuf, Board, &'static str, Primitives,
     plan
 }
 
-/// Runs everything `filter` keeps (printing progress), then writes README.md's table and the
+/// Runs everything `filter` keeps (printing progress), then writes docs/firmware-report.md's table and the
 /// JSON; for a partial report, both under `firmware/target/report/partial/` instead.
 pub fn run(filter: &ReportFilter) -> Result<Vec<ReportRun>, String> {
     filter.check()?;
@@ -407,7 +407,7 @@ pub fn run(filter: &ReportFilter) -> Result<Vec<ReportRun>, String> {
         for (name, text) in [("firmware-report.json", json_with_examples(&runs, &misses, &[])), ("table.md", markdown(&runs, &misses))] {
             let path = directory.join(name);
             std::fs::write(&path, text).map_err(|error| format!("{}: {error}", path.display()))?;
-            println!("wrote {} (a partial report: README.md and docs/ are left as they are)", path.display());
+            println!("wrote {} (a partial report: docs/ is left as it is)", path.display());
         }
         return Ok(runs);
     }
@@ -415,7 +415,7 @@ pub fn run(filter: &ReportFilter) -> Result<Vec<ReportRun>, String> {
     let json_path = root.join("docs/firmware-report.json");
     std::fs::write(&json_path, json_with_examples(&runs, &misses, &examples)).map_err(|error| format!("{}: {error}", json_path.display()))?;
     println!("wrote {}", json_path.display());
-    let readme_path = root.join("README.md");
+    let readme_path = root.join("docs/firmware-report.md");
     let readme = std::fs::read_to_string(&readme_path).map_err(|error| format!("{}: {error}", readme_path.display()))?;
     let updated = replace_between_markers(&readme, &(markdown(&runs, &misses) + &examples_markdown(&examples)))?;
     std::fs::write(&readme_path, updated).map_err(|error| format!("{}: {error}", readme_path.display()))?;
@@ -488,7 +488,7 @@ pub fn markdown(runs: &[ReportRun], misses: &[ReportMiss]) -> String {
         "Budget on the lm3s6965evb (64 KB RAM, 256 KB flash) for both scenes in `f32`, asserted by\n\
          `tests/tests/firmware_qemu.rs`: flash at most {} KB, static RAM at most {} KB, peak stack at most\n\
          {} KB, so at least {} KB of the RAM stays free, and no initialised statics (`.data`), whose\n\
-         values would take flash too (see [firmware/README.md](firmware/README.md#memory-budget)).\n\n",
+         values would take flash too (see [firmware/README.md](../firmware/README.md#memory-budget)).\n\n",
         budget::FLASH_BYTES / 1024,
         budget::STATIC_RAM_BYTES / 1024,
         budget::STACK_BYTES / 1024,
@@ -632,10 +632,10 @@ fn chapter_five_table(runs: &[ReportRun]) -> String {
         return String::new();
     }
     let mut text = String::from(
-        "\nThe thesis's chapter 5 on the chip (README, \"Chapter 5\"): `snooker-polished` (the ray tree:\n\
+        "\nThe thesis's chapter 5 on the chip (docs/features.md, \"Chapter 5\"): `snooker-polished` (the ray tree:\n\
          reflective balls, a glass cue ball, two lights, depth 4) and `lattice-antialiased` (corners\n\
          split twice where they differ by 6 %); and the ring torus it proposes (§5.2.1), `torus` (two\n\
-         tori, a ball and a table, shadows on); and the solids of chapter 3 (README \"Solids\"): `die` (a\n\
+         tori, a ball and a table, shadows on); and the solids of chapter 3 (docs/features.md, \"Solids\"): `die` (a\n\
          cube ∩ a sphere minus six pips), `lens` (glass: sphere ∩ sphere), `cup` (a torus handle) and\n\
          `nut` (a hexagonal prism minus a cylinder). With the scene's own `optimize`; rays per pixel counts\n\
          every primary ray (with antialiasing, every corner and sub-corner), secondary rays the tree's:\n\n\
@@ -701,8 +701,8 @@ fn without_optimizations(runs: &[ReportRun]) -> String {
     text
 }
 
-/// README.md with `table` between the markers; the markers (in a section of their own) are
-/// appended when absent.
+/// The report's page (docs/firmware-report.md) with `table` between the markers; the markers
+/// (in a section of their own) are appended when absent.
 pub fn replace_between_markers(readme: &str, table: &str) -> Result<String, String> {
     match (readme.find(START_MARKER), readme.find(END_MARKER)) {
         (Some(start), Some(end)) if start < end => {
@@ -714,7 +714,7 @@ pub fn replace_between_markers(readme: &str, table: &str) -> Result<String, Stri
             let separator = if readme.ends_with('\n') { "\n" } else { "\n\n" };
             Ok(format!("{readme}{separator}{SECTION_HEADING}\n\n{START_MARKER}\n{table}{END_MARKER}\n"))
         }
-        _ => Err(format!("README.md: `{START_MARKER}` must come once, before `{END_MARKER}`")),
+        _ => Err(format!("docs/firmware-report.md: `{START_MARKER}` must come once, before `{END_MARKER}`")),
     }
 }
 

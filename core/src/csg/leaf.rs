@@ -47,7 +47,7 @@ pub fn leaf_spans_into<N: Number, S: PushSpan<N>>(primitive: Primitive, ray: &Ra
 }
 
 /// Whether `p` (object space) is inside the unit primitive, boundary included.
-fn contains<N: Number>(primitive: Primitive, p: Vector3<N>) -> bool {
+pub(crate) fn contains<N: Number>(primitive: Primitive, p: Vector3<N>) -> bool {
     let (zero, one) = (N::ZERO, N::ONE);
     match primitive {
         Primitive::Cube => [p.x, p.y, p.z].iter().all(|c| *c >= zero && *c <= one),

@@ -3,5 +3,7 @@
 
 mod prepared;
 mod range;
+mod warnings;
 
 pub use prepared::*;
+pub use warnings::SceneWarning;

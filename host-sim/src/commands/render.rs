@@ -124,6 +124,7 @@ pub fn run(args: RenderArgs) -> anyhow::Result<()> {
             Ok(error) => scene_file::SceneFileError { path: args.scene.clone(), error }.into(),
             Err(other) => other.context(format!("cannot render {}", args.scene.display())),
         })?;
+    scene_file::warn(&args.scene, &scene);
     write_outputs(&args, &rendered)
 }
 
