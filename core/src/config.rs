@@ -15,7 +15,6 @@ use core::marker::PhantomData;
 
 use crate::model::{Object, Objects, Palette, PreparedSolidNode, MAX_DEPTH, MAX_HELD_SPANS, MAX_LIGHTS, MAX_SOLID_NODES, MAX_SOLID_STACK, MAX_SPANS};
 use crate::number::Number;
-use crate::optimize::shadow_culling::ShadowTables;
 use crate::storage::{Index, List, Table, Unset};
 
 /// The build's number type, object storage and capacities.
@@ -67,10 +66,11 @@ pub trait Config: 'static {
     /// squared on an array, up to [`MAX_GRID_SIZE`](crate::optimize::grid::MAX_GRID_SIZE)
     /// squared sized at run time (the grid's side then grows with the objects).
     type ScreenCells<T: Copy + Unset + 'static>: Table<T> + Unset;
-    /// The lights' shadow tables kept with the scene, one per light: none where each render
-    /// builds its own (on the stack), a baked scene's in flash (the render then builds none, and
-    /// the code that builds them is not linked).
-    type ShadowTables: Table<ShadowTables<'static, Self::Number>> + Unset;
+    /// The lights' shadow tables kept with the scene, one `T` per light
+    /// (`optimize::shadow_culling::ShadowTables`): none where each render builds its own (on the
+    /// stack), a baked scene's in flash (the render then builds none, and the code that builds
+    /// them is not linked).
+    type LightTables<T: Copy + Unset + 'static>: Table<T> + Unset;
     /// The ray tree's stack of nodes: at most [`Config::TREE_DEPTH`].
     type TreeStack<T: Clone>: List<T>;
     /// One row of antialiasing corners: its length is how many the render keeps (the
@@ -214,7 +214,7 @@ impl<N: Number + 'static, const K: usize, const POOL: usize, const DEPTH: usize,
     type BlockerLists = [u16; 0];
     type Hierarchy<T: Copy + Unset + 'static> = [T; 0];
     type ScreenCells<T: Copy + Unset + 'static> = [T; SCREEN_GRID_CELLS + 1];
-    type ShadowTables = [ShadowTables<'static, N>; 0];
+    type LightTables<T: Copy + Unset + 'static> = [T; 0];
     type TreeStack<T: Clone> = heapless::Vec<T, DEPTH>;
     type CornerRow = [[u8; 3]; ROW];
     const MAX_OBJECTS: usize = K;

@@ -142,11 +142,6 @@ impl Unset for bool {
     const UNSET: Self = false;
 }
 
-/// Every number type's [`Number::ZEROED`](crate::number::Number::ZEROED).
-impl<N: crate::number::Number> Unset for N {
-    const UNSET: Self = N::ZEROED;
-}
-
 impl<T: Copy, const K: usize> Table<T> for [T; K] {
     #[inline(always)]
     fn slots(&self) -> &[T] {

@@ -29,7 +29,7 @@
 use core::mem::size_of;
 
 use microtrace::config::Config;
-use microtrace::optimize::shadow_culling::{BlockerSet, DirectionChord, LightReach};
+use microtrace::optimize::shadow_culling::{BlockerSet, DirectionChord, LightReach, ShadowTables};
 use microtrace::storage::Table;
 
 use crate::scene;
@@ -38,7 +38,7 @@ use crate::scene;
 /// the render builds no shadow tables).
 const HIERARCHY_IN_FLASH: bool = <<scene::SceneConfig as Config>::Hierarchy<u16> as Table<u16>>::BAKED;
 /// Whether the lights' shadow tables are baked (the render builds none).
-const SHADOW_TABLES_IN_FLASH: bool = <<scene::SceneConfig as Config>::ShadowTables as Table<_>>::BAKED;
+const SHADOW_TABLES_IN_FLASH: bool = <<scene::SceneConfig as Config>::LightTables<ShadowTables<'static, scene::Number>> as Table<_>>::BAKED;
 /// The grid's pool entries per object built on the chip (none: a baked grid is in flash).
 const GRID_ENTRIES_PER_OBJECT: usize = <scene::SceneConfig as Config>::GRID_ENTRIES_PER_OBJECT;
 

@@ -120,7 +120,7 @@ impl<N: Number> Config for Heap<N> {
     type BlockerLists = Boxed<u32>;
     type Hierarchy<T: Copy + Unset + 'static> = Boxed<T>;
     type ScreenCells<T: Copy + Unset + 'static> = Boxed<T>;
-    type ShadowTables = [microtrace::optimize::shadow_culling::ShadowTables<'static, N>; 0];
+    type LightTables<T: Copy + Unset + 'static> = [T; 0];
     type TreeStack<T: Clone> = heapless::Vec<T, DEFAULT_TREE_DEPTH>;
     type CornerRow = Boxed<[u8; 3]>;
     const MAX_OBJECTS: usize = usize::MAX;

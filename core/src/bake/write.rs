@@ -310,7 +310,7 @@ impl microtrace::config::Config for SceneConfig {{
     type BlockerLists = [u16; 0];
     type Hierarchy<T: Copy + microtrace::storage::Unset + 'static> = {hierarchy_storage};
     type ScreenCells<T: Copy + microtrace::storage::Unset + 'static> = {grid_pool};
-    type ShadowTables = {shadow_storage};
+    type LightTables<T: Copy + microtrace::storage::Unset + 'static> = {shadow_storage};
     type TreeStack<T: Clone> = microtrace::storage::Capped<T, {tree_depth}>;
     type CornerRow = [[u8; 3]; {corner_row}];
     const MAX_OBJECTS: usize = {objects};
@@ -322,7 +322,7 @@ impl microtrace::config::Config for SceneConfig {{
         stack = solids.stack,
         grid_pool = in_flash_or_none(grid, "T"),
         hierarchy_storage = in_flash_or_none(hierarchy, "T"),
-        shadow_storage = in_flash_or_none(shadow_tables, "microtrace::optimize::shadow_culling::ShadowTables<'static, Number>"),
+        shadow_storage = in_flash_or_none(shadow_tables, "T"),
     )
 }
 

@@ -200,3 +200,8 @@ pub trait Number:
         value.is_finite() && value.abs() <= Self::SCENE_LIMIT
     }
 }
+
+/// Every number type's [`Number::ZEROED`]: a table of numbers starts all zero bytes.
+impl<N: Number> crate::storage::Unset for N {
+    const UNSET: Self = N::ZEROED;
+}

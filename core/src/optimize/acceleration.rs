@@ -69,9 +69,9 @@ pub struct Acceleration<C: Config> {
     #[cfg(feature = "acceleration-tables")]
     hierarchy_nodes: usize,
     grid: Grid<C>,
-    /// The lights' shadow tables kept with the scene (a baked scene's: `Config::ShadowTables`),
+    /// The lights' shadow tables kept with the scene (a baked scene's: `Config::LightTables`),
     /// one per light; none where a render builds its own.
-    shadow_tables: C::ShadowTables,
+    shadow_tables: C::LightTables<ShadowTables<'static, C::Number>>,
 }
 
 /// The tables that depend on the view by their parts, borrowed: what a preparation for a view

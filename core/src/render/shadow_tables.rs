@@ -39,7 +39,7 @@ pub(crate) fn with_shadow_culling<N: Number, R, C: Config<Number = N>>(
         // 5 ms on the SPD tree (two threads were slower than one: 287 against 234 ms).
         return body(&[ShadowCulling::NONE]);
     }
-    if <C::ShadowTables as Table<_>>::BAKED {
+    if <C::LightTables<ShadowTables<'static, N>> as Table<_>>::BAKED {
         // Baked for this view and these lights (in flash): nothing is built, and the building
         // code is not linked.
         return with_baked_tables(scene, body);
@@ -56,7 +56,7 @@ pub(crate) fn with_shadow_culling<N: Number, R, C: Config<Number = N>>(
     body(&[first])
 }
 
-/// The culling of each light from its baked tables (`Config::ShadowTables`); a light without
+/// The culling of each light from its baked tables (`Config::LightTables`); a light without
 /// one culls nothing (every object a candidate: the same picture, more tests).
 #[cfg(feature = "acceleration-tables")]
 fn with_baked_tables<N: Number, R, C: Config<Number = N>>(scene: &Prepared<C>, body: impl FnOnce(&[ShadowCulling<'_, N, C::Index>]) -> R) -> R {
