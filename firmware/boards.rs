@@ -40,12 +40,13 @@ pub enum BoardDisplay {
 pub const LM3S811EVB_OLED: (u16, u16) = (96, 16);
 
 /// Every board, in `xtask::firmware::Board`'s order.
-pub const BOARDS: [BoardFacts; 5] = [
+pub const BOARDS: [BoardFacts; 6] = [
     BoardFacts { name: "lm3s6965evb", rust_target: "thumbv7m-none-eabi", qemu_machine: "lm3s6965evb", qemu_cpu: "cortex-m3", architecture: "armv7m", fpu_square_root: false, memory_x: "../memory.x", display: BoardDisplay::AnySize },
     BoardFacts { name: "mps2-an386", rust_target: "thumbv7em-none-eabihf", qemu_machine: "mps2-an386", qemu_cpu: "cortex-m4", architecture: "armv7m", fpu_square_root: true, memory_x: "src/board/mps2_an386/memory.x", display: BoardDisplay::None },
     BoardFacts { name: "microbit", rust_target: "thumbv6m-none-eabi", qemu_machine: "microbit", qemu_cpu: "cortex-m0", architecture: "armv6m", fpu_square_root: false, memory_x: "src/board/microbit/memory.x", display: BoardDisplay::None },
     BoardFacts { name: "mps2-an505", rust_target: "thumbv8m.main-none-eabihf", qemu_machine: "mps2-an505", qemu_cpu: "cortex-m33", architecture: "armv8m", fpu_square_root: true, memory_x: "src/board/mps2_an505/memory.x", display: BoardDisplay::None },
     BoardFacts { name: "lm3s811evb", rust_target: "thumbv7m-none-eabi", qemu_machine: "lm3s811evb", qemu_cpu: "cortex-m3", architecture: "armv7m", fpu_square_root: false, memory_x: "src/board/lm3s811evb/memory.x", display: BoardDisplay::Exactly(LM3S811EVB_OLED.0, LM3S811EVB_OLED.1) },
+    BoardFacts { name: "netduinoplus2", rust_target: "thumbv7em-none-eabihf", qemu_machine: "netduinoplus2", qemu_cpu: "cortex-m4", architecture: "armv7m", fpu_square_root: true, memory_x: "src/board/netduinoplus2/memory.x", display: BoardDisplay::None },
 ];
 
 /// The board named `name`.

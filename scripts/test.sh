@@ -18,13 +18,14 @@ for example in firmware/examples/pico-ssd1306 firmware/examples/pico-st7789 firm
   (cd "$example" && cargo clippy --quiet --release -- -D warnings)
 done
 
-echo "== clippy on the QEMU firmware (lm3s6965evb: streamed, framebuffer, progressive; mps2-an386, microbit, mps2-an505, lm3s811evb)" >&2
+echo "== clippy on the QEMU firmware (lm3s6965evb: streamed, framebuffer, progressive; mps2-an386, microbit, mps2-an505, netduinoplus2, lm3s811evb)" >&2
 for features in "" "--features framebuffer" "--features progressive"; do
   (cd firmware && MICROTRACE_SCENE="$PWD/../scenes/snooker.mts" cargo clippy --quiet --release $features -- -D warnings)
 done
 (cd firmware && MICROTRACE_SCENE="$PWD/../scenes/snooker.mts" cargo clippy --quiet --release --no-default-features --features mps2-an386,sphere --target thumbv7em-none-eabihf -- -D warnings)
 (cd firmware && MICROTRACE_SCENE="$PWD/../scenes/snooker.mts" cargo clippy --quiet --release --no-default-features --features microbit,sphere --target thumbv6m-none-eabi -- -D warnings)
 (cd firmware && MICROTRACE_SCENE="$PWD/../scenes/snooker.mts" cargo clippy --quiet --release --no-default-features --features mps2-an505,sphere --target thumbv8m.main-none-eabihf -- -D warnings)
+(cd firmware && MICROTRACE_SCENE="$PWD/../scenes/snooker.mts" cargo clippy --quiet --release --no-default-features --features netduinoplus2,sphere --target thumbv7em-none-eabihf -- -D warnings)
 # The lm3s811evb's 8 KB hold snooker only with the grid xtask sizes for it: the lint build keeps
 # a token stack reserve instead (the fit is tests/tests/firmware_qemu.rs's).
 (cd firmware && MICROTRACE_SCENE="$PWD/../scenes/snooker.mts" MICROTRACE_STACK_RESERVE=256 cargo clippy --quiet --release --no-default-features --features lm3s811evb,sphere --target thumbv7m-none-eabi -- -D warnings)

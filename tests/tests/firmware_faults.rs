@@ -30,7 +30,7 @@ fn work_dir(name: &str) -> PathBuf {
 /// The RAM each board's memory.x gives the firmware: (origin, bytes).
 fn ram(board: Board) -> (u64, u64) {
     match board {
-        Board::Lm3s6965evb | Board::Mps2An386 => (0x2000_0000, 64 * 1024),
+        Board::Lm3s6965evb | Board::Mps2An386 | Board::Netduinoplus2 => (0x2000_0000, 64 * 1024),
         Board::Microbit => (0x2000_0000, 16 * 1024),
         Board::Lm3s811evb => (0x2000_0000, 8 * 1024),
         // The Secure alias of SSRAM2 (firmware/src/board/mps2_an505/memory.x).

@@ -149,6 +149,14 @@ fn lattice_on_mps2_an386_matches_the_host() {
     firmware_matches_host("lattice.mts", Board::Mps2An386);
 }
 
+/// The board added by docs/architecture.md's "A new board" checklist alone: a Netduino Plus 2
+/// (STM32F405, Cortex-M4F), snooker and the lattice the host's pictures byte for byte.
+#[test]
+fn snooker_and_the_lattice_on_netduinoplus2_match_the_host() {
+    firmware_matches_host("snooker.mts", Board::Netduinoplus2);
+    firmware_matches_host("lattice.mts", Board::Netduinoplus2);
+}
+
 #[test]
 fn snooker_on_mps2_an505_matches_the_host() {
     firmware_matches_host("snooker.mts", Board::Mps2An505);

@@ -26,6 +26,8 @@ pub enum Board {
     Mps2An505,
     /// The smallest: a Cortex-M3 with 64 KB of flash and 8 KB of RAM.
     Lm3s811evb,
+    /// A Cortex-M4F on an STM32F405 (Netduino Plus 2): the board added by the checklist.
+    Netduinoplus2,
 }
 
 /// The board table (firmware/boards.rs), shared with the firmware's build script.
@@ -34,7 +36,7 @@ mod boards;
 pub use boards::{BoardDisplay, BoardFacts, BOARDS};
 
 impl Board {
-    pub const ALL: [Board; 5] = [Board::Lm3s6965evb, Board::Mps2An386, Board::Microbit, Board::Mps2An505, Board::Lm3s811evb];
+    pub const ALL: [Board; 6] = [Board::Lm3s6965evb, Board::Mps2An386, Board::Microbit, Board::Mps2An505, Board::Lm3s811evb, Board::Netduinoplus2];
     /// The boards the firmware report runs every scene on: each core once, with the same
     /// budget of 256 KB of code and 64 KB (16 KB on the micro:bit) of RAM. The lm3s811evb's
     /// 8 KB hold snooker, not every scene: its own test measures it.
@@ -48,6 +50,7 @@ impl Board {
             Board::Microbit => 2,
             Board::Mps2An505 => 3,
             Board::Lm3s811evb => 4,
+            Board::Netduinoplus2 => 5,
         };
         &BOARDS[row]
     }

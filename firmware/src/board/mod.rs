@@ -45,6 +45,11 @@ mod mps2_an505;
 #[cfg(feature = "mps2-an505")]
 pub use mps2_an505::*;
 
+#[cfg(feature = "netduinoplus2")]
+mod netduinoplus2;
+#[cfg(feature = "netduinoplus2")]
+pub use netduinoplus2::*;
+
 #[cfg(feature = "lm3s811evb")]
 mod lm3s811evb;
 #[cfg(feature = "lm3s811evb")]
