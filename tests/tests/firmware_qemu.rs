@@ -320,6 +320,15 @@ fn links(elf: &std::path::Path, modules: &[&str]) -> bool {
     names.iter().any(|name| modules.iter().any(|module| name.contains(module)))
 }
 
+/// The disc (scenes/disc.mts; the primitive added by docs/architecture.md's checklist) on the
+/// chip: the host's picture in `f32` on the M4F and in `soft32` on the M3, the tilted disc seen
+/// almost edge-on included.
+#[test]
+fn the_disc_on_mps2_an386_and_lm3s6965evb_matches_the_host() {
+    firmware_matches_host("disc.mts", Board::Mps2An386);
+    firmware_matches_host_in::<microtrace::number::SoftFloat>("disc.mts", Board::Lm3s6965evb);
+}
+
 /// The ring torus (scenes/torus.mts) on the chip: the host's picture in `f32` on the M4F and in
 /// `soft32` on the M3, and its intersection linked only there.
 #[test]

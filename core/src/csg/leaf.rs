@@ -60,7 +60,7 @@ pub(crate) fn contains<N: Number>(primitive: Primitive, p: Vector3<N>) -> bool {
             sum * sum <= (p.x * p.x + p.y * p.y).times_power_of_two(2)
         }
         // A solid is never its own leaf; open surfaces enclose nothing (and no solid has them).
-        Primitive::Solid(_) | Primitive::Frustum(_) | Primitive::Triangle => false,
+        Primitive::Solid(_) | Primitive::Frustum(_) | Primitive::Triangle | Primitive::Disc => false,
         #[cfg(feature = "triangle")]
         Primitive::Patch(_) => false,
     }

@@ -182,11 +182,20 @@ impl fmt::Display for SceneErrorKind {
             Self::ZeroDirection => f.write_str(
                 "the direction is the zero vector (or too small or too large for its length to be computed)",
             ),
-            Self::ObjectRequired { keyword } => write!(
-                f,
-                "`{keyword}` changes the most recent object, but no object has started yet \
-                 (start one with cube, sphere, cylinder, cone, torus, frustum or triangle, or a solid: union, intersection or difference)"
-            ),
+            Self::ObjectRequired { keyword } => {
+                write!(f, "`{keyword}` changes the most recent object, but no object has started yet (start one with ")?;
+                // Every primitive's keyword, from the one list of them.
+                let names = super::Primitive::ALL.map(super::Primitive::name);
+                for (index, name) in names.iter().enumerate() {
+                    let separator = match index {
+                        0 => "",
+                        _ if index + 1 == names.len() => " or ",
+                        _ => ", ",
+                    };
+                    write!(f, "{separator}{name}")?;
+                }
+                f.write_str(", or a solid: union, intersection or difference)")
+            }
             Self::TooManyObjects { capacity } => {
                 write!(f, "too many objects: this build holds at most {capacity}")
             }

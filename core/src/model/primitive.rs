@@ -22,6 +22,9 @@ pub enum Primitive {
     /// An open truncated cone (NFF's `c`): radius `taper` at z = 0 to 1 at z = 1, no caps, seen
     /// from outside and inside (`frustum R`). A taper of 1 is an open cylinder, 0 an open cone.
     Frustum(Taper),
+    /// The unit disc, radius 1 about the origin in the plane z = 0, seen from both sides (`disc`):
+    /// open, so no solid's operand.
+    Disc,
     /// The unit triangle (0,0,0), (1,0,0), (0,1,0) in the plane z = 0, seen from both sides: its
     /// transform maps it onto any triangle (NFF's polygons and patches, split into triangles).
     Triangle,
@@ -163,7 +166,7 @@ impl Taper {
 impl Primitive {
     /// One of each kind (the torus with a quarter tube, the frustum with a half taper): for the
     /// keywords, the features, tests.
-    pub const ALL: [Primitive; 7] = [
+    pub const ALL: [Primitive; 8] = [
         Primitive::Cube,
         Primitive::Sphere,
         Primitive::Cylinder,
@@ -171,10 +174,11 @@ impl Primitive {
         Primitive::Torus(Tube::QUARTER),
         Primitive::Frustum(Taper::HALF),
         Primitive::Triangle,
+        Primitive::Disc,
     ];
 
     /// The kind's place in [`Primitive::ALL`] (a torus of any tube is 4, a frustum of any taper
-    /// 5; a solid, 7, after them).
+    /// 5; a solid, 8, after them).
     pub const fn index(self) -> usize {
         match self {
             Primitive::Cube => 0,
@@ -186,7 +190,8 @@ impl Primitive {
             Primitive::Triangle => 6,
             #[cfg(feature = "triangle")]
             Primitive::Patch(_) => 6,
-            Primitive::Solid(_) => 7,
+            Primitive::Disc => 7,
+            Primitive::Solid(_) => 8,
         }
     }
 
@@ -194,10 +199,22 @@ impl Primitive {
     /// (an open frustum or a triangle has no inside to combine).
     pub const fn is_closed(self) -> bool {
         match self {
-            Primitive::Frustum(_) | Primitive::Triangle => false,
+            Primitive::Frustum(_) | Primitive::Triangle | Primitive::Disc => false,
             #[cfg(feature = "triangle")]
             Primitive::Patch(_) => false,
-            _ => true,
+            Primitive::Cube | Primitive::Sphere | Primitive::Cylinder | Primitive::Cone | Primitive::Torus(_) | Primitive::Solid(_) => true,
+        }
+    }
+
+    /// Whether the primitive lies along its z axis, within radius 1 of it from z = 0 to z = 1
+    /// (a cylinder, a cone, a frustum): its bounding capsule and its depth bounds follow the
+    /// axis (`optimize`); any other is bounded by a ball.
+    pub const fn has_axis(self) -> bool {
+        match self {
+            Primitive::Cylinder | Primitive::Cone | Primitive::Frustum(_) => true,
+            Primitive::Cube | Primitive::Sphere | Primitive::Torus(_) | Primitive::Triangle | Primitive::Disc | Primitive::Solid(_) => false,
+            #[cfg(feature = "triangle")]
+            Primitive::Patch(_) => false,
         }
     }
 
@@ -213,6 +230,7 @@ impl Primitive {
             Primitive::Triangle => cfg!(feature = "triangle"),
             #[cfg(feature = "triangle")]
             Primitive::Patch(_) => true,
+            Primitive::Disc => cfg!(feature = "disc"),
             Primitive::Solid(_) => cfg!(feature = "csg"),
         }
     }
@@ -229,6 +247,7 @@ impl Primitive {
             Primitive::Triangle => "triangle",
             #[cfg(feature = "triangle")]
             Primitive::Patch(_) => "patch",
+            Primitive::Disc => "disc",
             Primitive::Solid(_) => "solid",
         }
     }
@@ -242,6 +261,7 @@ impl Primitive {
             Primitive::Triangle => [[0.0; 3], [1.0, 1.0, 0.0]],
             #[cfg(feature = "triangle")]
             Primitive::Patch(_) => [[0.0; 3], [1.0, 1.0, 0.0]],
+            Primitive::Disc => [[-1.0, -1.0, 0.0], [1.0, 1.0, 0.0]],
             Primitive::Torus(tube) => {
                 let (r, outer) = (tube.to_f64(), 1.0 + tube.to_f64());
                 [[-outer, -outer, -r], [outer, outer, r]]

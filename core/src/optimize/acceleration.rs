@@ -342,7 +342,7 @@ impl<N: Number, C: Config<Number = N>> Acceleration<C> {
         let block_capsule = |index: usize, columns: (u16, u16), rows: (u16, u16)| -> N {
             let global = near.get(index).copied().unwrap_or(-N::MAX);
             // Only cylinders and cones gain: a sphere's or cube's capsule is a ball.
-            let shaped = shapes.slots().get(index).is_some_and(|p| matches!(p, Primitive::Cylinder | Primitive::Cone | Primitive::Frustum(_)));
+            let shaped = shapes.slots().get(index).is_some_and(|p| p.has_axis());
             let block = if shaped { capsules_of(index).and_then(|capsule| map.block_depth_bound(&capsule, columns, rows)) } else { None };
             match block {
                 Some(bound) if bound > global => bound,

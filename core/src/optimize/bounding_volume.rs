@@ -63,6 +63,13 @@ pub const VOLUMES: [[[f64; 3]; 8]; 4] = [
 /// The unit triangle's volume: the triangle itself, its last vertex repeated, twice (it is flat).
 const TRIANGLE_VOLUME: [[f64; 3]; 8] = [[0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 1.0, 0.0], [0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 1.0, 0.0]];
 
+/// The unit disc's volume: its flat square, each corner twice.
+const DISC_VOLUME: [[f64; 3]; 8] = [[-1.0, -1.0, 0.0], [1.0, -1.0, 0.0], [1.0, 1.0, 0.0], [-1.0, 1.0, 0.0], [-1.0, -1.0, 0.0], [1.0, -1.0, 0.0], [1.0, 1.0, 0.0], [-1.0, 1.0, 0.0]];
+
+/// The unit disc's faces: its square's four sides and its plane from both sides.
+const DISC_FACES: [([f64; 3], f64); 6] =
+    [([1.0, 0.0, 0.0], 1.0), ([-1.0, 0.0, 0.0], 1.0), ([0.0, 1.0, 0.0], 1.0), ([0.0, -1.0, 0.0], 1.0), ([0.0, 0.0, 1.0], 0.0), ([0.0, 0.0, -1.0], 0.0)];
+
 /// The unit triangle's faces: its three edges and its plane from both sides.
 const TRIANGLE_FACES: [([f64; 3], f64); 6] =
     [([-1.0, 0.0, 0.0], 0.0), ([0.0, -1.0, 0.0], 0.0), ([1.0, 1.0, 0.0], 1.0), ([0.0, 0.0, 1.0], 0.0), ([0.0, 0.0, -1.0], 0.0), ([0.0, 0.0, 1.0], 0.0)];
@@ -93,6 +100,7 @@ pub fn unit_volume(primitive: Primitive) -> [[f64; 3]; 8] {
         Primitive::Triangle => TRIANGLE_VOLUME,
         #[cfg(feature = "triangle")]
         Primitive::Patch(_) => TRIANGLE_VOLUME,
+        Primitive::Disc => DISC_VOLUME,
     }
 }
 
@@ -110,6 +118,7 @@ fn unit_faces(primitive: Primitive) -> [([f64; 3], f64); 6] {
         Primitive::Triangle => TRIANGLE_FACES,
         #[cfg(feature = "triangle")]
         Primitive::Patch(_) => TRIANGLE_FACES,
+        Primitive::Disc => DISC_FACES,
     }
 }
 
@@ -188,6 +197,14 @@ impl ObjectGeometry {
                     *slot = world(*vertex);
                 }
                 Some(3)
+            }
+            // Its rim, circumscribed by the 16-gon.
+            Primitive::Disc => {
+                for k in 0..SIDES {
+                    let (x, y) = ring(k);
+                    out[k] = world([x, y, 0.0]);
+                }
+                Some(SIDES)
             }
             Primitive::Cone => {
                 out[0] = world([0.0; 3]);
@@ -275,7 +292,7 @@ impl ObjectGeometry {
     /// axis, with the radius reaching the 16-gons circumscribed about their circles; spheres and
     /// cubes a point and their bounding sphere.
     pub fn bounding_capsule(&self) -> ([f64; 3], [f64; 3], f64) {
-        if matches!(self.primitive, Primitive::Cylinder | Primitive::Cone | Primitive::Frustum(_)) {
+        if self.primitive.has_axis() {
             let start = self.world_from_object.transform_point([0.0; 3]);
             let end = self.world_from_object.transform_point([0.0, 0.0, 1.0]);
             let mut points = [[0.0; 3]; MAX_POINTS];

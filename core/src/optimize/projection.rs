@@ -495,6 +495,12 @@ mod tests {
                 }
                 #[cfg(feature = "triangle")]
                 Primitive::Patch(_) => return [x.abs().min(0.5), y.abs().min(0.5), 0.0],
+                Primitive::Disc => {
+                    if x * x + y * y <= 1.0 {
+                        return [x, y, 0.0];
+                    }
+                    false
+                }
                 Primitive::Triangle => {
                     let (u, v) = (x.abs(), y.abs());
                     if u + v <= 1.0 {

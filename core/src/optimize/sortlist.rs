@@ -149,8 +149,7 @@ pub fn heapsort<S: ?Sized>(items: &mut S, len: usize, less: impl Fn(&S, usize, u
 /// less the radius. `None` for other primitives or when no bound is found. Lowered for
 /// rounding like [`depth_bound`].
 pub fn block_depth_bound(screen: &Screen, geometry: &ObjectGeometry, columns: (u16, u16), rows: (u16, u16)) -> Option<f64> {
-    use crate::model::Primitive;
-    if !matches!(geometry.primitive, Primitive::Cylinder | Primitive::Cone | Primitive::Frustum(_)) {
+    if !geometry.primitive.has_axis() {
         return None;
     }
     let (a, b, radius) = geometry.bounding_capsule();

@@ -191,6 +191,7 @@ fn frusta_and_triangles_are_open_surfaces_outside_solids_only() {
     assert_eq!(error, SceneError { line: 3, kind: SceneErrorKind::OpenSurfaceInSolid { primitive: "triangle" } });
     assert!(error.to_string().starts_with("line 3: a triangle is an open surface, with no inside"), "{error}");
     assert_eq!(err("difference\n  cube\n  frustum 0.5\nend").kind, SceneErrorKind::OpenSurfaceInSolid { primitive: "frustum" });
+    assert_eq!(err("union\n  cube\n  disc\nend").kind, SceneErrorKind::OpenSurfaceInSolid { primitive: "disc" });
 }
 
 #[test]
@@ -644,7 +645,7 @@ fn exact_messages() {
         ("viewplane 1e400", "line 1: viewplane D: number `1e400` is out of range (too large for a 64-bit float)"),
         ("window 1 0 0 1", "line 1: window: X1 must be less than X2"),
         ("sphere\nscale 0 1 1", "line 2: singular transform: the object's transform cannot be inverted"),
-        ("ka 1", "line 1: `ka` changes the most recent object, but no object has started yet (start one with cube, sphere, cylinder, cone, torus, frustum or triangle, or a solid: union, intersection or difference)"),
+        ("ka 1", "line 1: `ka` changes the most recent object, but no object has started yet (start one with cube, sphere, cylinder, cone, torus, frustum, triangle or disc, or a solid: union, intersection or difference)"),
         ("parallel 0 0 0", "line 1: the direction is the zero vector (or too small or too large for its length to be computed)"),
     ] {
         assert_eq!(err(text).to_string(), message);

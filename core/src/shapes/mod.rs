@@ -23,6 +23,8 @@ mod cone;
 mod cube;
 #[cfg(feature = "cylinder")]
 mod cylinder;
+#[cfg(feature = "disc")]
+mod disc;
 #[cfg(feature = "frustum")]
 mod frustum;
 #[cfg(feature = "torus")]
@@ -77,9 +79,27 @@ impl Primitive {
             Primitive::Triangle => triangle::intersect(ray, interval),
             #[cfg(feature = "triangle")]
             Primitive::Patch(normals) => triangle::intersect_patch(ray, interval, normals),
+            #[cfg(feature = "disc")]
+            Primitive::Disc => disc::intersect(ray, interval),
+            // A solid's leaves are intersected by its walk (`csg::solid`), never the solid.
+            Primitive::Solid(_) => None,
             // Scene preparation rejects primitives that are not compiled in.
-            #[allow(unreachable_patterns)]
-            _ => None,
+            #[cfg(not(feature = "cube"))]
+            Primitive::Cube => None,
+            #[cfg(not(feature = "sphere"))]
+            Primitive::Sphere => None,
+            #[cfg(not(feature = "cylinder"))]
+            Primitive::Cylinder => None,
+            #[cfg(not(feature = "cone"))]
+            Primitive::Cone => None,
+            #[cfg(not(feature = "torus"))]
+            Primitive::Torus(_) => None,
+            #[cfg(not(feature = "frustum"))]
+            Primitive::Frustum(_) => None,
+            #[cfg(not(feature = "triangle"))]
+            Primitive::Triangle => None,
+            #[cfg(not(feature = "disc"))]
+            Primitive::Disc => None,
         }
     }
 
@@ -102,8 +122,25 @@ impl Primitive {
             Primitive::Triangle => triangle::occluded(ray, interval),
             #[cfg(feature = "triangle")]
             Primitive::Patch(_) => triangle::occluded(ray, interval),
-            #[allow(unreachable_patterns)]
-            _ => false,
+            #[cfg(feature = "disc")]
+            Primitive::Disc => disc::occluded(ray, interval),
+            Primitive::Solid(_) => false,
+            #[cfg(not(feature = "cube"))]
+            Primitive::Cube => false,
+            #[cfg(not(feature = "sphere"))]
+            Primitive::Sphere => false,
+            #[cfg(not(feature = "cylinder"))]
+            Primitive::Cylinder => false,
+            #[cfg(not(feature = "cone"))]
+            Primitive::Cone => false,
+            #[cfg(not(feature = "torus"))]
+            Primitive::Torus(_) => false,
+            #[cfg(not(feature = "frustum"))]
+            Primitive::Frustum(_) => false,
+            #[cfg(not(feature = "triangle"))]
+            Primitive::Triangle => false,
+            #[cfg(not(feature = "disc"))]
+            Primitive::Disc => false,
         }
     }
 }
@@ -168,8 +205,25 @@ impl Primitive {
             Primitive::Triangle => Crossings::sorted(triangle::crossings(ray), unscale),
             #[cfg(feature = "triangle")]
             Primitive::Patch(_) => Crossings::sorted(triangle::crossings(ray), unscale),
-            #[allow(unreachable_patterns)]
-            _ => Crossings::sorted::<0>([], unscale),
+            #[cfg(feature = "disc")]
+            Primitive::Disc => Crossings::sorted(disc::crossings(ray), unscale),
+            Primitive::Solid(_) => Crossings::sorted::<0>([], unscale),
+            #[cfg(not(feature = "cube"))]
+            Primitive::Cube => Crossings::sorted::<0>([], unscale),
+            #[cfg(not(feature = "sphere"))]
+            Primitive::Sphere => Crossings::sorted::<0>([], unscale),
+            #[cfg(not(feature = "cylinder"))]
+            Primitive::Cylinder => Crossings::sorted::<0>([], unscale),
+            #[cfg(not(feature = "cone"))]
+            Primitive::Cone => Crossings::sorted::<0>([], unscale),
+            #[cfg(not(feature = "torus"))]
+            Primitive::Torus(_) => Crossings::sorted::<0>([], unscale),
+            #[cfg(not(feature = "frustum"))]
+            Primitive::Frustum(_) => Crossings::sorted::<0>([], unscale),
+            #[cfg(not(feature = "triangle"))]
+            Primitive::Triangle => Crossings::sorted::<0>([], unscale),
+            #[cfg(not(feature = "disc"))]
+            Primitive::Disc => Crossings::sorted::<0>([], unscale),
         }
     }
 }

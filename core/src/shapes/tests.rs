@@ -325,3 +325,26 @@ fn triangle_agrees_with_moller_trumbore() {
     assert!(hits > 500, "{hits} hits");
     assert!(near_edges < 10, "{near_edges} within rounding of an edge");
 }
+
+/// The disc: the plane z = 0 within radius 1, from both sides, its normal +z; a ray in its
+/// plane never meets it, and one just beyond its rim misses.
+#[cfg(feature = "disc")]
+#[test]
+fn disc_hits_from_both_sides_inside_its_rim_only() {
+    assert_eq!(hit(Primitive::Disc, ray([0.5, 0.0, 5.0], [0.0, 0.0, -1.0])), Some((5.0, [0.0, 0.0, 1.0])));
+    assert_eq!(hit(Primitive::Disc, ray([0.0, -0.5, -2.0], [0.0, 0.0, 2.0])), Some((1.0, [0.0, 0.0, 1.0])));
+    // On the rim (x² + y² = 1) counts; just beyond it does not.
+    assert!(hit(Primitive::Disc, ray([1.0, 0.0, 1.0], [0.0, 0.0, -1.0])).is_some());
+    assert_eq!(hit(Primitive::Disc, ray([1.0 + 1e-9, 0.0, 1.0], [0.0, 0.0, -1.0])), None);
+    // In its plane, and behind the origin.
+    assert_eq!(hit(Primitive::Disc, ray([-5.0, 0.0, 0.0], [1.0, 0.0, 0.0])), None);
+    assert_eq!(hit(Primitive::Disc, ray([0.0, 0.0, 5.0], [0.0, 0.0, 1.0])), None);
+    // Oblique, and `occluded` agrees with `intersect` within an interval.
+    let oblique = ray([-3.0, 0.0, 3.0], [1.0, 0.0, -1.0]);
+    assert_eq!(hit(Primitive::Disc, oblique), Some((3.0, [0.0, 0.0, 1.0])));
+    assert!(Primitive::Disc.occluded(&oblique, Interval::below(3.5)));
+    assert!(!Primitive::Disc.occluded(&oblique, Interval::below(2.5)));
+    assert_eq!(Primitive::Disc.crossings(&oblique).len, 1);
+    // Open: no solid's operand.
+    assert!(!Primitive::Disc.is_closed());
+}
