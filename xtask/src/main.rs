@@ -8,7 +8,7 @@ use xtask::report::ReportFilter;
 
 fn usage() -> &'static str {
     "usage:
-  cargo xtask firmware [--scene FILE] [--board lm3s6965evb|mps2-an386|microbit|mps2-an505|lm3s811evb] [--number f64|f32|fixed|fixed16|f32-micromath|soft32]
+  cargo xtask firmware [--scene FILE] [--board lm3s6965evb|mps2-an386|microbit|mps2-an505|lm3s811evb|netduinoplus2] [--number f64|f32|fixed|fixed16|f32-micromath|soft32]
                        [--opt scene|all|none|pixelbuffer,extents,grid,sortlist] [--out DIR]
                        [--timeout SECONDS] [--stack-reserve BYTES] [--size WxH] [--progressive] [--framebuffer]
                        [--provoke panic|hard-fault|unexpected-interrupt|stack-overflow]
