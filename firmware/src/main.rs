@@ -62,7 +62,7 @@ fn main() -> ! {
     mpu::protect_memory();
     #[cfg(microtrace_fault_test)]
     fault::provoke_if_asked();
-    let display = board::init();
+    let display = <board::This as board::Board>::init();
     #[cfg(any(feature = "framebuffer", feature = "progressive"))]
     let Some(pixels) = cortex_m::singleton!(: [u8; scene::PIXEL_COUNT] = [0; scene::PIXEL_COUNT]) else {
         fail("framebuffer taken twice")
@@ -109,7 +109,7 @@ fn main() -> ! {
     write_report(scene, &statistics, stack_peak_bytes, stack_size_bytes);
 
     print("microtrace: done\n");
-    let captured = board::hold_picture_for_capture();
+    let captured = <board::This as board::Board>::hold_picture_for_capture();
     semihosting::exit(captured)
 }
 

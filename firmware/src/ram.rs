@@ -70,11 +70,11 @@ const SHADOW_TABLES_PER_OBJECT: usize = size_of::<DirectionChord<scene::Number>>
 
 /// The frames below the tables: preparing's, the row's and the pixel's (the report's deepest
 /// stack beyond the tables is about 3 KB): 4 KB, less on a board whose RAM cannot spare it.
-const STACK_BASE_BYTES: usize = crate::board::STACK_BASE_BYTES;
+const STACK_BASE_BYTES: usize = <crate::board::This as crate::board::Board>::STACK_BASE_BYTES;
 
 /// The budget's peak stack: the least the check keeps (12 KB; 6 KB on the 16 KB micro:bit, 3 KB
 /// on the 8 KB lm3s811evb).
-const STACK_BUDGET_BYTES: usize = crate::board::STACK_BUDGET_BYTES;
+const STACK_BUDGET_BYTES: usize = <crate::board::This as crate::board::Board>::STACK_BUDGET_BYTES;
 
 /// The stack this build keeps free for preparing and rendering (see the module's comment).
 pub const STACK_RESERVE_BYTES: usize = match scene::STACK_RESERVE_BYTES {

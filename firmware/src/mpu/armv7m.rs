@@ -2,6 +2,9 @@
 
 use crate::scene;
 
+/// The board's peripherals (src/board/mod.rs, `Board::PERIPHERALS`).
+const PERIPHERALS: (u32, u32) = <crate::board::This as crate::board::Board>::PERIPHERALS;
+
 // MPU_RASR fields (ARMv7-M Architecture Reference Manual, B3.5.9).
 const RASR_ENABLE: u32 = 1;
 const RASR_EXECUTE_NEVER: u32 = 1 << 28;
@@ -19,7 +22,7 @@ const CTRL_ENABLE: u32 = 1;
 const REGIONS: [(u32, u32, u32); 3] = [
     (scene::FLASH_ORIGIN, scene::FLASH_BYTES, RASR_READ_ONLY | RASR_NORMAL),
     (scene::RAM_ORIGIN, scene::RAM_BYTES, RASR_FULL_ACCESS | RASR_NORMAL | RASR_EXECUTE_NEVER),
-    (crate::board::PERIPHERALS.0, crate::board::PERIPHERALS.1, RASR_FULL_ACCESS | RASR_DEVICE | RASR_EXECUTE_NEVER),
+    (PERIPHERALS.0, PERIPHERALS.1, RASR_FULL_ACCESS | RASR_DEVICE | RASR_EXECUTE_NEVER),
 ];
 
 // An MPU region is a power of two of at least 32 bytes, aligned to its size: memory.x must

@@ -3,6 +3,9 @@
 
 use crate::scene;
 
+/// The board's peripherals (src/board/mod.rs, `Board::PERIPHERALS`).
+const PERIPHERALS: (u32, u32) = <crate::board::This as crate::board::Board>::PERIPHERALS;
+
 // MPU_RBAR: SH (non-shareable 0b00) in bits 4:3, AP in 2:1, XN in 0.
 const RBAR_EXECUTE_NEVER: u32 = 1;
 const RBAR_READ_WRITE: u32 = 0b01 << 1;
@@ -22,7 +25,7 @@ const CTRL_ENABLE: u32 = 1;
 const REGIONS: [(u32, u32, u32, u32); 3] = [
     (scene::FLASH_ORIGIN, scene::FLASH_BYTES, RBAR_READ_ONLY, RLAR_NORMAL),
     (scene::RAM_ORIGIN, scene::RAM_BYTES, RBAR_READ_WRITE | RBAR_EXECUTE_NEVER, RLAR_NORMAL),
-    (crate::board::PERIPHERALS.0, crate::board::PERIPHERALS.1, RBAR_READ_WRITE | RBAR_EXECUTE_NEVER, RLAR_DEVICE),
+    (PERIPHERALS.0, PERIPHERALS.1, RBAR_READ_WRITE | RBAR_EXECUTE_NEVER, RLAR_DEVICE),
 ];
 
 // A region starts and ends on a 32-byte granule.

@@ -5,7 +5,10 @@
 //! `framebuffer.bin` only.
 
 /// No display (driven) here: the picture goes to the host only.
-pub use super::headless::{hold_picture_for_capture, init};
+pub use super::headless::{hold_picture_for_capture, init, Display};
+
+/// No MPU on the M0: no region (src/fault.rs).
+pub const PERIPHERALS: (u32, u32) = (0, 0);
 
 /// The stack the RAM check keeps at the least (src/ram.rs): 16 KB of RAM cannot keep the
 /// other boards' 12 KB beside a scene; snooker's deepest stack measured 4.5 KB in every number

@@ -4,7 +4,7 @@
 //! 256 KB of code and 64 KB of RAM of QEMU's 4 MB + 4 MB, to stand for a small part.
 
 /// No display (driven) here: the picture goes to the host only.
-pub use super::headless::{hold_picture_for_capture, init};
+pub use super::headless::{hold_picture_for_capture, init, Display};
 
 /// The APB peripherals (UARTs, timers, the FPGA's registers), the MPU's region for them
 /// (src/fault.rs); the firmware uses none, semihosting is all it needs.

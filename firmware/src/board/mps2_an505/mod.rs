@@ -5,7 +5,7 @@
 //! and 64 KB of RAM, to stand for a small part.
 
 /// No display (driven) here: the picture goes to the host only.
-pub use super::headless::{hold_picture_for_capture, init};
+pub use super::headless::{hold_picture_for_capture, init, Display};
 
 /// The Secure alias of the APB peripherals, the MPU's region for them (src/fault.rs); the
 /// firmware uses none, semihosting is all it needs.

@@ -6,7 +6,7 @@
 //! so their figures compare. Added by docs/architecture.md's "A new board" checklist alone.
 
 /// No display (driven) here: the picture goes to the host only.
-pub use super::headless::{hold_picture_for_capture, init};
+pub use super::headless::{hold_picture_for_capture, init, Display};
 
 /// The APB and AHB1 peripherals (RCC, GPIO, the USARTs), the MPU's region for them
 /// (src/fault.rs); the firmware uses none, semihosting is all it needs.
