@@ -84,6 +84,49 @@ pub fn warn(path: &Path, scene: &HostScene) {
     });
 }
 
+/// The number type, the mode and the overrides of a scene's statements that `render` and `view`
+/// share (clap's `flatten`).
+#[derive(clap::Args, Clone, Debug)]
+pub struct SceneOptions {
+    /// The number type to trace in.
+    #[arg(long, value_parser = crate::number_type::number_kind_parser(), default_value = "f64")]
+    pub number: microtrace::number::NumberKind,
+    /// PGA palette mode or 24-bit RGB mode.
+    #[arg(long, value_enum, default_value = "pga")]
+    pub mode: crate::rendering::Mode,
+    /// Replace the viewport by W x H pixels; the scene's window stays in view, with square pixels.
+    #[arg(long, value_name = "WxH", value_parser = parse_size)]
+    pub size: Option<(u16, u16)>,
+    /// Override the scene's `optimize` statement: all, none, or a list like extents,grid.
+    #[arg(long, value_name = "LIST", value_parser = parse_optimizations)]
+    pub opt: Option<Optimizations>,
+    /// Override the scene's `shadows` statement.
+    #[arg(long, value_name = "on|off", value_parser = parse_switch)]
+    pub shadows: Option<bool>,
+    /// Override the scene's `dither` statement.
+    #[arg(long, value_name = "on|off", value_parser = parse_switch)]
+    pub dither: Option<bool>,
+}
+
+impl SceneOptions {
+    /// The overrides applied to `scene`: its size (the window widened to keep pixels square),
+    /// its `optimize`, `shadows` and `dither`.
+    pub fn apply(&self, scene: &mut HostScene) {
+        if let Some((width, height)) = self.size {
+            scene.fit_to_size(width, height);
+        }
+        if let Some(optimizations) = self.opt {
+            scene.optimizations = optimizations;
+        }
+        if let Some(shadows) = self.shadows {
+            scene.shadows = shadows;
+        }
+        if let Some(dither) = self.dither {
+            scene.dither = dither;
+        }
+    }
+}
+
 /// Parses `WxH`.
 pub fn parse_size(text: &str) -> Result<(u16, u16), String> {
     let (width, height) = text.split_once(['x', 'X']).ok_or_else(|| format!("expected WxH, got `{text}`"))?;

@@ -5,13 +5,11 @@ use std::num::NonZeroUsize;
 use std::path::PathBuf;
 
 use anyhow::{bail, Context};
-use microtrace::model::Optimizations;
 
 use crate::files;
-use microtrace::number::NumberKind;
 use crate::rendering::{render_scene_on_threads, render_scene_progressive, Mode, Pixels, Rendered};
 use microtrace::render::PASS_SIZES;
-use crate::scene_file::{self, parse_optimizations, parse_size, parse_switch};
+use crate::scene_file::{self, SceneOptions};
 use crate::commands::view::ui::preview::{self, DisplayKind};
 use embedded_graphics::pixelcolor::RgbColor;
 
@@ -22,24 +20,9 @@ pub struct RenderArgs {
     /// Write the image as a PNG.
     #[arg(long, value_name = "IMAGE.png")]
     pub out: Option<PathBuf>,
-    /// The number type to trace in.
-    #[arg(long, value_parser = crate::number_type::number_kind_parser(), default_value = "f64")]
-    pub number: NumberKind,
-    /// PGA palette mode or 24-bit RGB mode.
-    #[arg(long, value_enum, default_value = "pga")]
-    pub mode: Mode,
-    /// Replace the viewport by W x H pixels; the scene's window stays in view, with square pixels.
-    #[arg(long, value_name = "WxH", value_parser = parse_size)]
-    pub size: Option<(u16, u16)>,
-    /// Override the scene's `optimize` statement: all, none, or a list like extents,grid.
-    #[arg(long, value_name = "LIST", value_parser = parse_optimizations)]
-    pub opt: Option<Optimizations>,
-    /// Override the scene's `shadows` statement.
-    #[arg(long, value_name = "on|off", value_parser = parse_switch)]
-    pub shadows: Option<bool>,
-    /// Override the scene's `dither` statement.
-    #[arg(long, value_name = "on|off", value_parser = parse_switch)]
-    pub dither: Option<bool>,
+    /// The number type, the mode and the scene's overrides (shared with `view`).
+    #[command(flatten)]
+    pub options: SceneOptions,
     /// Write the thesis's PGA image file (compressed 0xD9 records unless --uncompressed).
     #[arg(long, value_name = "FILE")]
     pub pga: Option<PathBuf>,
@@ -92,22 +75,22 @@ pub fn run(args: RenderArgs) -> anyhow::Result<()> {
     if args.out.is_none() && args.pga.is_none() && args.rgb.is_none() && args.lut.is_none() && !args.stats && args.stats_json.is_none() {
         bail!("nothing to write: give --out IMAGE.png (or --pga, --rgb, --lut, --stats, --stats-json)");
     }
-    if args.pga.is_some() && args.mode != Mode::Pga {
+    if args.pga.is_some() && args.options.mode != Mode::Pga {
         bail!("--pga writes palette indices: it needs --mode pga");
     }
-    if args.rgb.is_some() && args.mode != Mode::Rgb {
+    if args.rgb.is_some() && args.options.mode != Mode::Rgb {
         bail!("--rgb writes the RGB file format: it needs --mode rgb");
     }
     let mut scene = scene_file::load(&args.scene)?;
-    apply_overrides(&mut scene, &args);
+    args.options.apply(&mut scene);
     if let (Some(kind), Some(path)) = (args.display, &args.out) {
-        let shown = preview::render(&scene, args.number, kind).map_err(|error| scene_file::in_file(&args.scene, error))?;
+        let shown = preview::render(&scene, args.options.number, kind).map_err(|error| scene_file::in_file(&args.scene, error))?;
         let (width, height) = kind.size();
         let rgb: Vec<[u8; 3]> = shown.pixels.iter().map(|colour| [colour.r(), colour.g(), colour.b()]).collect();
         return files::write_png_rgb(path, width, height, &rgb).with_context(|| format!("cannot write {}", path.display()));
     }
     if let (true, Some(path)) = (args.edges, &args.out) {
-        let surfaces = crate::edges::first_surfaces(&scene, args.number).map_err(|error| scene_file::in_file(&args.scene, error.into()))?;
+        let surfaces = crate::edges::first_surfaces(&scene, args.options.number).map_err(|error| scene_file::in_file(&args.scene, error.into()))?;
         let (width, height) = (scene.viewport.width(), scene.viewport.height());
         let rgb: Vec<[u8; 3]> = crate::edges::edges(&surfaces, usize::from(width)).into_iter().map(|edge| if edge { [0; 3] } else { [255; 3] }).collect();
         return files::write_png_rgb(path, width, height, &rgb).with_context(|| format!("cannot write {}", path.display()));
@@ -115,9 +98,9 @@ pub fn run(args: RenderArgs) -> anyhow::Result<()> {
     let label = format!("rendering {}", args.scene.display());
     let threads = args.threads.unwrap_or_else(default_threads);
     let rendered = if args.progressive {
-        render_scene_progressive(&scene, args.number, args.mode, Some(&label))
+        render_scene_progressive(&scene, args.options.number, args.options.mode, Some(&label))
     } else {
-        render_scene_on_threads(&scene, args.number, args.mode, Some(&label), threads)
+        render_scene_on_threads(&scene, args.options.number, args.options.mode, Some(&label), threads)
     };
     let rendered = rendered
         .map_err(|error| match error.downcast::<microtrace::model::SceneError>() {
@@ -126,21 +109,6 @@ pub fn run(args: RenderArgs) -> anyhow::Result<()> {
         })?;
     scene_file::warn(&args.scene, &scene);
     write_outputs(&args, &rendered)
-}
-
-pub fn apply_overrides(scene: &mut scene_file::HostScene, args: &RenderArgs) {
-    if let Some((width, height)) = args.size {
-        scene.fit_to_size(width, height);
-    }
-    if let Some(optimizations) = args.opt {
-        scene.optimizations = optimizations;
-    }
-    if let Some(shadows) = args.shadows {
-        scene.shadows = shadows;
-    }
-    if let Some(dither) = args.dither {
-        scene.dither = dither;
-    }
 }
 
 fn write_outputs(args: &RenderArgs, rendered: &Rendered) -> anyhow::Result<()> {

@@ -30,7 +30,7 @@ use crate::commands::render::statistics_table;
 use crate::files;
 use microtrace::number::NumberKind;
 use crate::rendering::{Mode, Pixels, Rendered};
-use crate::scene_file::{self, parse_optimizations, parse_size, parse_switch, HostScene};
+use crate::scene_file::{self, HostScene, SceneOptions};
 use crate::heap::HostPrepared;
 use microtrace::with_number_kind;
 
@@ -49,24 +49,10 @@ use ui::window::View;
 pub struct ViewArgs {
     /// The scene to show (.mts, or NFF: .nff, .nff.gz).
     pub scene: PathBuf,
-    /// The number type to trace in (N cycles it in the window).
-    #[arg(long, value_parser = crate::number_type::number_kind_parser(), default_value = "f64")]
-    pub number: NumberKind,
-    /// PGA palette mode or 24-bit RGB mode (M switches).
-    #[arg(long, value_enum, default_value = "pga")]
-    pub mode: Mode,
-    /// Replace the viewport by W x H pixels.
-    #[arg(long, value_name = "WxH", value_parser = parse_size)]
-    pub size: Option<(u16, u16)>,
-    /// Override the scene's `optimize` statement: all, none, or a list like extents,grid.
-    #[arg(long, value_name = "LIST", value_parser = parse_optimizations)]
-    pub opt: Option<Optimizations>,
-    /// Override the scene's `shadows` statement.
-    #[arg(long, value_name = "on|off", value_parser = parse_switch)]
-    pub shadows: Option<bool>,
-    /// Override the scene's `dither` statement.
-    #[arg(long, value_name = "on|off", value_parser = parse_switch)]
-    pub dither: Option<bool>,
+    /// The number type (N cycles it in the window), the mode (M switches it) and the scene's
+    /// overrides, as `render` takes them.
+    #[command(flatten)]
+    pub options: SceneOptions,
     /// Show each window pixel as N x N screen pixels (for small scenes).
     #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=16))]
     pub scale: u32,
@@ -142,18 +128,7 @@ fn grid_lines<C: microtrace::config::Config>(acceleration: &microtrace::optimize
 
 pub fn run(args: ViewArgs) -> anyhow::Result<()> {
     let mut scene = scene_file::load(&args.scene)?;
-    if let Some((width, height)) = args.size {
-        scene.fit_to_size(width, height);
-    }
-    if let Some(optimizations) = args.opt {
-        scene.optimizations = optimizations;
-    }
-    if let Some(shadows) = args.shadows {
-        scene.shadows = shadows;
-    }
-    if let Some(dither) = args.dither {
-        scene.dither = dither;
-    }
+    args.options.apply(&mut scene);
     let (width, height) = (u32::from(scene.viewport.width()), u32::from(scene.viewport.height()));
     let panel_x = width + 8;
     let panel_height = DisplayKind::tallest() + 12 + ui::panel::height(PANEL_LINES);
@@ -164,8 +139,8 @@ pub fn run(args: ViewArgs) -> anyhow::Result<()> {
     let title = format!("MicroTrace — {}", args.scene.display());
     let mut view = View::open(&title, &output, &display)?;
     let mut settings = Settings {
-        number: args.number,
-        mode: args.mode,
+        number: args.options.number,
+        mode: args.options.mode,
         overlay: args.overlay,
         edges: false,
         fill: args.fill,
