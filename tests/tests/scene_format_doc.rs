@@ -17,7 +17,7 @@ use microtrace::scene::Scene;
 const CAPACITY: usize = 16;
 
 /// The parser's keywords, in the order of `Keyword::ALL` (core/src/parser/mod.rs).
-const KEYWORDS: [&str; 38] = [
+const KEYWORDS: [&str; 39] = [
     "viewport",
     "window",
     "viewplane",
@@ -37,6 +37,7 @@ const KEYWORDS: [&str; 38] = [
     "torus",
     "frustum",
     "triangle",
+    "disc",
     "scale",
     "rotate",
     "translate",
